@@ -1,0 +1,51 @@
+# crumple: one entry point for everything. `make reproduce` and `make test` work on a fresh
+# Debian 12 machine: both install what is missing first (`make deps`).
+BUILD     ?= build
+JOBS      ?= $(shell nproc)
+PRESET    ?= quick
+SEEDS     ?= 1 2 3
+PROTOCOL  ?= protocols/axial_crumpling.yaml
+CMAKE_ARGS ?=
+
+SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
+DEB_PACKAGES := build-essential cmake git pkg-config libeigen3-dev libhdf5-dev hdf5-tools \
+  libyaml-cpp-dev libopencv-dev libcgal-dev libcli11-dev libspdlog-dev libfmt-dev \
+  nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
+  python3-matplotlib python3-numpy python3-h5py python3-scipy
+
+.PHONY: all deps build test test-all bench reproduce clean
+
+all: build
+
+# Installs the Debian packages that are missing; a no-op (well under a second) when all are there.
+deps:
+	@missing=$$(dpkg-query -W -f='$${Package} $${Status}\n' $(DEB_PACKAGES) 2>/dev/null \
+	  | awk '$$NF=="installed"{print $$1}' | sort > .deps-present; \
+	  for p in $(DEB_PACKAGES); do grep -qx "$$p" .deps-present || echo $$p; done); \
+	rm -f .deps-present; \
+	if [ -n "$$missing" ]; then \
+	  echo "make deps: installing$$(echo $$missing | sed 's/^/ /')"; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+	else echo "make deps: all packages present"; fi
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+# The fast suite (everything not labelled slow); the whole of it runs in a few minutes.
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
+
+test-all: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	@for b in $(BUILD)/tests/bench/bench_*; do [ -x "$$b" ] && echo "== $$b" && $$b; done; true
+
+include pipeline/reproduce.mk
+
+clean:
+	rm -rf $(BUILD) runs results
