@@ -42,6 +42,9 @@ class ForceTerm {
   virtual void coupled_pairs(std::vector<std::pair<Index, Index>>& out) const = 0;
   /// Rebuild cached slots after the pattern changed.
   virtual void bind(const BlockPattern& pattern) = 0;
+  /// Changes whenever the set returned by coupled_pairs() changes (contact pairs, say); terms
+  /// with a fixed stencil keep 0. SheetModel::rebuild_pattern() looks only at this number.
+  virtual std::uint64_t pattern_version() const { return 0; }
 };
 
 }  // namespace crumple

@@ -1,0 +1,189 @@
+// Bending with plastic rest curvature (bending.hpp, paper eq. 15 and Appendix B.4).
+#include "sim/model/bending.hpp"
+
+#include "sim/model/edge_colors.hpp"
+
+#include <cmath>
+
+namespace crumple {
+
+BendingTerm::BendingTerm(const Mesh& mesh, double kb, Assembly assembly)
+    : mesh_(&mesh),
+      kb_(kb),
+      assembly_(assembly),
+      hinge_colors_(color_hinges(mesh)),
+      tri_colors_(color_triangles(mesh)) {}
+
+void BendingTerm::update_cache(const State& s) const {
+  const Index nh = mesh_->num_hinges();
+  cache_.resize(nh);
+#pragma omp parallel for schedule(static)
+  for (Index h = 0; h < nh; ++h) {
+    const auto& hg = mesh_->hinges[h];
+    const auto& nd = hg.nodes;
+    HingeCache& c = cache_[h];
+    c.theta = bend_angle_derivatives(node(s.x, nd[0]), node(s.x, nd[1]), node(s.x, nd[2]),
+                                     node(s.x, nd[3]), c.grad, nullptr);
+    const double sh = std::sin(0.5 * c.theta), ch = std::cos(0.5 * c.theta);
+    c.c = 2.0 * sh;
+    const double k = kb_ * hg.rest_factor;
+    const double d = c.c - s.p[h];
+    c.zeta = k * d * ch;
+    c.xi = k * (ch * ch - 0.5 * d * sh);
+  }
+}
+
+double BendingTerm::energy(const State& s) const {
+  double e = 0.0;
+  const Index nh = mesh_->num_hinges();
+#pragma omp parallel for reduction(+ : e) schedule(static)
+  for (Index h = 0; h < nh; ++h) {
+    const auto& hg = mesh_->hinges[h];
+    const auto& nd = hg.nodes;
+    const double th =
+        bend_angle(node(s.x, nd[0]), node(s.x, nd[1]), node(s.x, nd[2]), node(s.x, nd[3]));
+    const double d = 2.0 * std::sin(0.5 * th) - s.p[h];
+    e += 0.5 * kb_ * hg.rest_factor * d * d;
+  }
+  return e;
+}
+
+void BendingTerm::add_force(const State& s, VecX& f) const {
+  update_cache(s);
+  for_each_colored(hinge_colors_, [&](Index h) {
+    const auto& nd = mesh_->hinges[h].nodes;
+    const HingeCache& c = cache_[h];
+    for (int a = 0; a < 4; ++a) f.segment<3>(3 * nd[a]) -= c.zeta * c.grad.segment<3>(3 * a);
+  });
+}
+
+void BendingTerm::add_jacobians(const State& s, Jacobians& J) const {
+  update_cache(s);
+  double* val = J.Hx.valuePtr();
+  if (assembly_ == Assembly::PerHinge) {
+    for_each_colored(hinge_colors_, [&](Index h) {
+      const auto& nd = mesh_->hinges[h].nodes;
+      const HingeCache& c = cache_[h];
+      Vec12 g;
+      Mat12 H;
+      bend_angle_derivatives(node(s.x, nd[0]), node(s.x, nd[1]), node(s.x, nd[2]),
+                             node(s.x, nd[3]), g, &H);
+      H *= c.zeta;
+      H.noalias() += c.xi * g * g.transpose();
+      const auto& sl = hinge_slots_[h];
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) add_block(val, sl[4 * a + b], H.block<3, 3>(3 * a, 3 * b));
+    });
+  } else {
+    // zeta H(theta): each triangle sums the half-hinge terms of its interior edges, weighted by
+    // their zeta, into S_a (scalars) and G_ab (in-plane vectors); its 9 blocks are then
+    // S_a dn_b n^T + n G_ab^T, written once.
+    for_each_colored(tri_colors_, [&](Index t) {
+      const auto& tri = mesh_->triangles[t];
+      double S[3] = {0, 0, 0};
+      Vec3 G[3][3];
+      for (auto& row : G)
+        for (auto& g : row) g.setZero();
+      HalfHinge hh;
+      bool any = false;
+      for (int k = 0; k < 3; ++k) {
+        const Index hinge = mesh_->edge_hinge[mesh_->triangle_edges[t][k]];
+        if (hinge < 0) continue;
+        const int loc[3] = {(k + 1) % 3, (k + 2) % 3, k};  // half-hinge (p, q, r) -> vertex
+        half_hinge(node(s.x, tri[loc[0]]), node(s.x, tri[loc[1]]), node(s.x, tri[loc[2]]), hh,
+                   true);
+        const double z = cache_[hinge].zeta;
+        for (int a = 0; a < 3; ++a) {
+          S[loc[a]] += z * hh.s[a];
+          for (int b = 0; b < 3; ++b) G[loc[a]][loc[b]] += z * hh.ds[a][b];
+        }
+        any = true;
+      }
+      if (!any) return;
+      // dn for vertex v: n x (opposite edge, counter-clockwise) / 2A, the same for every edge.
+      const Vec3 x0 = node(s.x, tri[0]), x1 = node(s.x, tri[1]), x2 = node(s.x, tri[2]);
+      const Vec3 nv = (x1 - x0).cross(x2 - x0);
+      const double a2 = nv.norm();
+      const Vec3 n = nv / a2;
+      const Vec3 dn[3] = {n.cross(x1 - x2) / a2, n.cross(x2 - x0) / a2, n.cross(x0 - x1) / a2};
+      const auto& sl = tri_slots_[t];
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          add_block(val, sl[3 * a + b],
+                    S[a] * dn[b] * n.transpose() + n * G[a][b].transpose());
+    });
+    for_each_colored(hinge_colors_, [&](Index h) {
+      const HingeCache& c = cache_[h];
+      const auto& sl = hinge_slots_[h];
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+          add_block(val, sl[4 * a + b],
+                    c.xi * c.grad.segment<3>(3 * a) * c.grad.segment<3>(3 * b).transpose());
+    });
+  }
+
+  const Index nh = mesh_->num_hinges();
+  if (J.Hp.rows() == 3 * mesh_->num_nodes() && J.Hp.cols() == nh) {
+    // Hp = -dF/dp = -kb f dc/dx, one column of 12 entries per hinge.
+    std::vector<Eigen::Triplet<double, int>> trip;
+    trip.reserve(12 * nh);
+    for (Index h = 0; h < nh; ++h) {
+      const auto& hg = mesh_->hinges[h];
+      const double w = -kb_ * hg.rest_factor * std::cos(0.5 * cache_[h].theta);
+      for (int a = 0; a < 4; ++a)
+        for (int d = 0; d < 3; ++d)
+          trip.emplace_back(3 * hg.nodes[a] + d, h, w * cache_[h].grad[3 * a + d]);
+    }
+    SpMatCol hp(J.Hp.rows(), nh);
+    hp.setFromTriplets(trip.begin(), trip.end());
+    J.Hp += hp;
+  }
+}
+
+void BendingTerm::curvatures(const VecX& x, VecX& c) const {
+  const Index nh = mesh_->num_hinges();
+  c.resize(nh);
+#pragma omp parallel for schedule(static)
+  for (Index h = 0; h < nh; ++h) {
+    const auto& nd = mesh_->hinges[h].nodes;
+    c[h] = 2.0 * std::sin(0.5 * bend_angle(node(x, nd[0]), node(x, nd[1]), node(x, nd[2]),
+                                           node(x, nd[3])));
+  }
+}
+
+void BendingTerm::curvature_gradients(const VecX& x, VecX& c, std::vector<Vec12>& grad) const {
+  const Index nh = mesh_->num_hinges();
+  c.resize(nh);
+  grad.resize(nh);
+#pragma omp parallel for schedule(static)
+  for (Index h = 0; h < nh; ++h) {
+    const auto& nd = mesh_->hinges[h].nodes;
+    const double th = bend_angle_derivatives(node(x, nd[0]), node(x, nd[1]), node(x, nd[2]),
+                                             node(x, nd[3]), grad[h], nullptr);
+    c[h] = 2.0 * std::sin(0.5 * th);
+    grad[h] *= std::cos(0.5 * th);
+  }
+}
+
+void BendingTerm::coupled_pairs(std::vector<std::pair<Index, Index>>& out) const {
+  for (const auto& hg : mesh_->hinges)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) out.emplace_back(hg.nodes[a], hg.nodes[b]);
+}
+
+void BendingTerm::bind(const BlockPattern& p) {
+  hinge_slots_.resize(mesh_->num_hinges());
+  for (Index h = 0; h < mesh_->num_hinges(); ++h) {
+    const auto& nd = mesh_->hinges[h].nodes;
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) hinge_slots_[h][4 * a + b] = p.slot(nd[a], nd[b]);
+  }
+  tri_slots_.resize(mesh_->num_triangles());
+  for (Index t = 0; t < mesh_->num_triangles(); ++t) {
+    const auto& tri = mesh_->triangles[t];
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) tri_slots_[t][3 * a + b] = p.slot(tri[a], tri[b]);
+  }
+}
+
+}  // namespace crumple

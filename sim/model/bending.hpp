@@ -1,0 +1,59 @@
+// Bending with plastic rest curvature (paper eq. 15; Appendix B.4; bending-derivatives.md §4-6).
+//
+// For each hinge h with bend angle theta (hinge_geometry.hpp), the dimensionless curvature is
+// c = 2 sin(theta/2) (signed as theta, eq. 14 and 17) and the energy is
+//     E_h = 1/2 kb f_h (c - p_h)^2,   f_h = sqrt(3)|e0|^2 / (2 Abar)  (rest state).
+// With dc = cos(theta/2) d theta and d^2c = cos(theta/2) H(theta) - 1/2 sin(theta/2) dtheta
+// dtheta^T, the force is F = -zeta grad(theta) and the Hessian is
+//     Hx = zeta H(theta) + xi grad(theta) grad(theta)^T,
+//     zeta = kb f (c - p) cos(theta/2),  xi = kb f (cos^2(theta/2) - 1/2 (c - p) sin(theta/2)),
+// and Hp = -dF/dp = -kb f grad(c). The zeta H(theta) part is assembled per triangle
+// (bending-derivatives.md §6.1: each triangle sums the half-hinge Hessians of its three edges
+// before writing its 9 blocks once) or, for comparison, per hinge.
+#pragma once
+
+#include "sim/mesh/mesh.hpp"
+#include "sim/model/force_term.hpp"
+#include "sim/model/hinge_geometry.hpp"
+
+namespace crumple {
+
+class BendingTerm : public ForceTerm {
+ public:
+  enum class Assembly { PerTriangle, PerHinge };
+  BendingTerm(const Mesh& mesh, double kb, Assembly assembly = Assembly::PerTriangle);
+
+  std::string name() const override { return "bending"; }
+  double energy(const State& s) const override;
+  void add_force(const State& s, VecX& f) const override;
+  void add_jacobians(const State& s, Jacobians& J) const override;
+  void coupled_pairs(std::vector<std::pair<Index, Index>>& out) const override;
+  void bind(const BlockPattern& pattern) override;
+
+  Assembly assembly() const { return assembly_; }
+  void set_assembly(Assembly a) { assembly_ = a; }
+
+  /// Signed curvature c = 2 sin(theta/2) of every hinge (size n_hinges).
+  void curvatures(const VecX& x, VecX& c) const;
+  /// c and its gradient (12 entries over the hinge's nodes x0..x3) for every hinge.
+  void curvature_gradients(const VecX& x, VecX& c, std::vector<Vec12>& grad) const;
+
+  double kb() const { return kb_; }
+
+ private:
+  struct HingeCache {
+    double theta, c, zeta, xi;
+    Vec12 grad;  // d theta / dx over the hinge's 4 nodes
+  };
+  void update_cache(const State& s) const;
+
+  const Mesh* mesh_;
+  double kb_;
+  Assembly assembly_;
+  std::vector<std::vector<Index>> hinge_colors_, tri_colors_;
+  std::vector<std::array<BlockSlot, 16>> hinge_slots_;
+  std::vector<std::array<BlockSlot, 9>> tri_slots_;
+  mutable std::vector<HingeCache> cache_;
+};
+
+}  // namespace crumple

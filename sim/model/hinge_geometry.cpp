@@ -1,0 +1,80 @@
+// Bend angle and its derivatives (hinge_geometry.hpp).
+//
+// Derivation of the in-plane gradients of s (see the header for the notation). With the
+// right-handed frame (e, m, n) of the triangle, e = (q-p)/L and m = n x e pointing from the edge
+// towards r, the foot parameter and the altitude vary as
+//   d tau/d p = (tau-1) e/L - h m/L^2,   d tau/d q = -tau e/L + h m/L^2,   d tau/d r = e/L,
+//   d h/d p   = -(1-tau) m,              d h/d q   = -tau m,               d h/d r   = m,
+// (moving p or q tilts the edge line; only in-plane motion matters to first order), and
+// s_p = (1-tau)/h, s_q = tau/h, s_r = -1/h follow by the quotient rule.
+#include "sim/model/hinge_geometry.hpp"
+
+#include <cmath>
+
+namespace crumple {
+
+void half_hinge(const Vec3& p, const Vec3& q, const Vec3& r, HalfHinge& o, bool with_second) {
+  const Vec3 e = q - p;
+  const Vec3 pr = r - p;
+  const Vec3 nv = e.cross(pr);
+  const double a2 = nv.norm();  // twice the area
+  const double l2 = e.squaredNorm();
+  const double l = std::sqrt(l2);
+  o.n = nv / a2;
+  const double h = a2 / l;
+  const double tau = pr.dot(e) / l2;
+  o.s[0] = (1.0 - tau) / h;
+  o.s[1] = tau / h;
+  o.s[2] = -1.0 / h;
+  o.dn[0] = o.n.cross(q - r) / a2;
+  o.dn[1] = o.n.cross(r - p) / a2;
+  o.dn[2] = o.n.cross(p - q) / a2;
+  if (!with_second) return;
+
+  const Vec3 eh = e / l;
+  const Vec3 m = o.n.cross(eh);
+  const double lh = 1.0 / (l * h), il2 = 1.0 / l2, ih2 = 1.0 / (h * h);
+  const double u = 1.0 - tau;
+  o.ds[0][0] = (u * lh) * eh + (il2 + u * u * ih2) * m;
+  o.ds[0][1] = (tau * lh) * eh + (-il2 + tau * u * ih2) * m;
+  o.ds[0][2] = (-lh) * eh - (u * ih2) * m;
+  o.ds[1][0] = (-u * lh) * eh + (-il2 + tau * u * ih2) * m;
+  o.ds[1][1] = (-tau * lh) * eh + (il2 + tau * tau * ih2) * m;
+  o.ds[1][2] = lh * eh - (tau * ih2) * m;
+  o.ds[2][0] = -(u * ih2) * m;
+  o.ds[2][1] = -(tau * ih2) * m;
+  o.ds[2][2] = ih2 * m;
+}
+
+double bend_angle(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3) {
+  const Vec3 e0 = x1 - x0;
+  const Vec3 n1 = e0.cross(x2 - x0).normalized();
+  const Vec3 n2 = (x3 - x0).cross(e0).normalized();
+  return std::atan2(n1.cross(n2).dot(e0.normalized()), n1.dot(n2));
+}
+
+double bend_angle_derivatives(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3,
+                              Vec12& grad, Mat12* hess) {
+  HalfHinge t1, t2;
+  half_hinge(x0, x1, x2, t1, hess != nullptr);  // local (0,1,2) -> hinge (0,1,2)
+  half_hinge(x1, x0, x3, t2, hess != nullptr);  // local (0,1,2) -> hinge (1,0,3)
+  static constexpr int map1[3] = {0, 1, 2};
+  static constexpr int map2[3] = {1, 0, 3};
+  grad.setZero();
+  for (int k = 0; k < 3; ++k) {
+    grad.segment<3>(3 * map1[k]) += t1.s[k] * t1.n;
+    grad.segment<3>(3 * map2[k]) += t2.s[k] * t2.n;
+  }
+  if (hess) {
+    hess->setZero();
+    for (const auto& [t, map] : {std::pair{&t1, map1}, std::pair{&t2, map2}})
+      for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j)
+          hess->block<3, 3>(3 * map[k], 3 * map[j]) +=
+              t->s[k] * t->dn[j] * t->n.transpose() + t->n * t->ds[k][j].transpose();
+  }
+  const Vec3 e0 = x1 - x0;
+  return std::atan2(t1.n.cross(t2.n).dot(e0.normalized()), t1.n.dot(t2.n));
+}
+
+}  // namespace crumple

@@ -1,0 +1,47 @@
+// The bend angle of a hinge and its exact first and second derivatives, robust at the flat
+// state theta = 0 (bending-derivatives.md §5-6, written here in a per-triangle form).
+//
+// theta is the signed angle between the normals of T1 = (x0, x1, x2) and T2 = (x1, x0, x3),
+// positive when (n1 x n2) . e0 > 0 (paper eq. 14), computed with atan2 so it is accurate over
+// the whole range (-pi, pi].
+//
+// Each triangle of a hinge contributes a "half hinge". For a triangle (p, q, r) whose hinge
+// edge runs p -> q and whose third vertex is r, with unit normal n = (q-p) x (r-p) / |.|,
+// edge length L, altitude h of r over the edge and tau = (r-p).(q-p)/L^2 the position of the
+// foot of r along the edge, the gradient of theta restricted to this triangle is
+//     d theta / d x_k = s_k n,   s = ((1 - tau), tau, -1) / h        (k = p, q, r),
+// which never divides by sin(theta) and is exact at theta = 0. The Hessian of theta is the sum
+// over both half hinges of
+//     d^2 theta / dx_k dx_j = s_k r_j n^T + n (grad_j s_k)^T,
+// where r_j n^T = d n / d x_j (r_j = n x (opposite edge) / 2A) and grad_j s_k lies in the
+// triangle's plane (closed forms in hinge_geometry.cpp). Every expression is checked against
+// finite differences in tests/model/test_hinge_geometry.cpp.
+#pragma once
+
+#include "sim/core/types.hpp"
+
+namespace crumple {
+
+/// Derivative data of one half hinge; local indices 0, 1, 2 = p, q, r.
+struct HalfHinge {
+  Vec3 n;                 ///< unit normal of the triangle
+  double s[3];            ///< d theta/d x_k = s[k] * n
+  Vec3 dn[3];             ///< d n/d x_j = dn[j] * n^T
+  Vec3 ds[3][3];          ///< ds[k][j] = gradient of s[k] with respect to x_j (in-plane)
+};
+
+/// Computes the half-hinge data of triangle (p, q, r) with hinge edge p -> q.
+/// If with_second is false, ds is left uninitialised.
+void half_hinge(const Vec3& p, const Vec3& q, const Vec3& r, HalfHinge& out, bool with_second);
+
+/// Signed bend angle of the hinge (x0, x1, x2, x3), in (-pi, pi].
+double bend_angle(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3);
+
+using Vec12 = Eigen::Matrix<double, 12, 1>;
+using Mat12 = Eigen::Matrix<double, 12, 12>;
+
+/// theta, its gradient (12) and optionally its Hessian (12 x 12) for one hinge.
+double bend_angle_derivatives(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3,
+                              Vec12& grad, Mat12* hess);
+
+}  // namespace crumple
