@@ -1,0 +1,38 @@
+// A wall acting on every node as a ForceTerm (one-sided potential of wall.hpp):
+//     U(d) = k/3 (range - d)^3 for d < range, 0 beyond.
+// The term also reports the reaction force on the wall (minus the sum of node forces), which
+// compress stages use to detect contact and log the load.
+#pragma once
+
+#include "protocols/terms/wall.hpp"
+#include "sim/model/force_term.hpp"
+
+#include <memory>
+
+namespace crumple {
+
+class WallTerm : public ForceTerm {
+ public:
+  /// k: stiffness of the cubic potential (force k range^2 at contact); range: its reach.
+  WallTerm(std::shared_ptr<const Wall> wall, Index num_nodes, double k, double range);
+  std::string name() const override { return wall_->name() + " wall"; }
+  double energy(const State& s) const override;
+  void add_force(const State& s, VecX& f) const override;
+  void add_jacobians(const State& s, Jacobians& J) const override;
+  void coupled_pairs(std::vector<std::pair<Index, Index>>&) const override {}
+  void bind(const BlockPattern& pattern) override;
+
+  const Wall& wall() const { return *wall_; }
+  /// Total force the nodes exert on the wall (the load on a piston).
+  Vec3 reaction(const State& s) const;
+  /// Smallest signed distance of any node to the wall.
+  double min_distance(const State& s) const;
+
+ private:
+  std::shared_ptr<const Wall> wall_;
+  Index n_;
+  double k_, range_;
+  std::vector<BlockSlot> slots_;
+};
+
+}  // namespace crumple
