@@ -35,11 +35,13 @@ void CylinderWall::distance(const Vec3& x, double t, double& d, Vec3& g, Mat3& H
   H = -sign_ * (P - u * u.transpose()) / rho;
 }
 
-SphereWall::SphereWall(const Vec3& center, LinearMotion radius, bool inside)
-    : c_(center), radius_(radius), sign_(inside ? 1.0 : -1.0) {}
+SphereWall::SphereWall(const Vec3& center, LinearMotion radius, bool inside,
+                       const Vec3& direction, LinearMotion offset)
+    : c_(center), dir_(direction.normalized()), radius_(radius), sign_(inside ? 1.0 : -1.0),
+      offset_(offset) {}
 
 void SphereWall::distance(const Vec3& x, double t, double& d, Vec3& g, Mat3& H) const {
-  const Vec3 r = x - c_;
+  const Vec3 r = x - (c_ + offset_.at(t) * dir_);
   const double l = std::max(r.norm(), 1e-300);
   const Vec3 u = r / l;
   d = sign_ * (radius_.at(t) - l);

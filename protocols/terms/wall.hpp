@@ -10,6 +10,7 @@
 #include "sim/core/types.hpp"
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -61,18 +62,21 @@ class CylinderWall : public Wall {
 };
 
 /// Sphere about `center`; allowed region inside or outside. With a shrinking radius and a soft
-/// stiffness this is the radial cutoff force of the paper's radial confinement (Fig. 5).
+/// stiffness this is the radial cutoff force of the paper's radial confinement (Fig. 5). The
+/// centre may move along `direction` by `offset` (a stamp pressed into the sheet).
 class SphereWall : public Wall {
  public:
-  SphereWall(const Vec3& center, LinearMotion radius, bool inside);
+  SphereWall(const Vec3& center, LinearMotion radius, bool inside,
+             const Vec3& direction = Vec3::UnitZ(), LinearMotion offset = {});
   std::string name() const override { return "sphere"; }
   void distance(const Vec3& x, double t, double& d, Vec3& g, Mat3& H) const override;
   double radius(double t) const { return radius_.at(t); }
 
  private:
-  Vec3 c_;
+  Vec3 c_, dir_;
   LinearMotion radius_;
   double sign_;
+  LinearMotion offset_;
 };
 
 /// Cone with apex `apex`, unit `axis` and half-angle alpha (radians); allowed region inside or

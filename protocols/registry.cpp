@@ -1,0 +1,74 @@
+// The stage registry (registry.hpp).
+#include "protocols/registry.hpp"
+
+#include <sstream>
+
+namespace crumple {
+
+const StageRegistry& StageRegistry::builtin() {
+  static const StageRegistry reg = [] {
+    StageRegistry r;
+    register_builtin_stages(r);
+    return r;
+  }();
+  return reg;
+}
+
+void StageRegistry::add(StageType type) {
+  const std::string name = type.name;
+  if (!types_.emplace(name, std::move(type)).second)
+    throw std::logic_error("stage type registered twice: " + name);
+}
+
+const StageType* StageRegistry::find(const std::string& name) const {
+  auto it = types_.find(name);
+  return it == types_.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> StageRegistry::names() const {
+  std::vector<std::string> v;
+  for (const auto& [k, t] : types_) v.push_back(k);
+  return v;
+}
+
+std::unique_ptr<Stage> StageRegistry::make(const YAML::Node& node, const std::string& file,
+                                           const std::string& path) const {
+  auto mark = [&](const YAML::Node& n) {
+    return file + ":" + std::to_string(n.Mark().line + 1) + ":" +
+           std::to_string(n.Mark().column + 1);
+  };
+  if (!node.IsMap()) throw InputError(mark(node) + ": " + path + ": a stage must be a map");
+  const YAML::Node t = node["type"];
+  if (!t.IsDefined())
+    throw InputError(mark(node) + ": " + path + ".type: missing (every stage needs a type)");
+  const std::string name = t.IsScalar() ? t.Scalar() : "";
+  const StageType* st = find(name);
+  if (!st) {
+    std::string valid;
+    for (const auto& n : names()) valid += (valid.empty() ? "" : ", ") + n;
+    throw InputError(mark(t) + ": " + path + ".type: unknown stage type '" + name +
+                     "' (valid: " + valid + ")");
+  }
+  StageArgs args(node, file, path, st->params);
+  return st->make(args);
+}
+
+std::string StageRegistry::describe() const {
+  std::ostringstream os;
+  for (const auto& [name, t] : types_) {
+    os << name << ": " << t.help << "\n";
+    for (const auto& p : t.params) {
+      os << "    " << p.name;
+      os << (p.fallback.empty() ? " (required)" : " = " + p.fallback);
+      if (!p.choices.empty()) {
+        os << " {";
+        for (std::size_t i = 0; i < p.choices.size(); ++i) os << (i ? "|" : "") << p.choices[i];
+        os << "}";
+      }
+      os << "  " << p.help << "\n";
+    }
+  }
+  return os.str();
+}
+
+}  // namespace crumple

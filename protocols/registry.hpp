@@ -1,0 +1,42 @@
+// Stage types registered by name (STYLE.md habit 6). Built-in types are registered in
+// builtin_stages.cpp, one line each; adding a stage type is one C++ file plus one line there.
+// An unknown name is rejected with the sorted list of valid names.
+#pragma once
+
+#include "protocols/stage.hpp"
+#include "protocols/stage_args.hpp"
+
+#include <functional>
+#include <map>
+
+namespace crumple {
+
+struct StageType {
+  std::string name;
+  std::string help;             ///< one line: what the stage models
+  std::vector<ParamSpec> params;
+  std::function<std::unique_ptr<Stage>(const StageArgs&)> make;
+};
+
+class StageRegistry {
+ public:
+  /// The registry with every built-in stage type.
+  static const StageRegistry& builtin();
+
+  void add(StageType type);
+  const StageType* find(const std::string& name) const;
+  std::vector<std::string> names() const;  ///< sorted
+  /// Builds a stage from its YAML map; InputError with file:line on any problem.
+  std::unique_ptr<Stage> make(const YAML::Node& node, const std::string& file,
+                              const std::string& path) const;
+  /// Every type with its parameters, for `crumple-sim --list-stages`.
+  std::string describe() const;
+
+ private:
+  std::map<std::string, StageType> types_;
+};
+
+/// Registers the built-in stage types (builtin_stages.cpp).
+void register_builtin_stages(StageRegistry& registry);
+
+}  // namespace crumple

@@ -1,0 +1,81 @@
+// A protocol stage: what acts on the sheet between two stop conditions (DESIGN.md §6).
+//
+// A stage never touches solver internals. In begin() it adds external terms to the model
+// (walls, pistons, tethers: see protocols/terms) through own(); done() is asked after every
+// chunk of simulated time and says whether the stop condition (time, a geometric target, or
+// quiescence) is met; end() removes the stage's terms. Stages of one cycle hand geometry to each
+// other through the Apparatus (the roll stage leaves the roll's axis and radius for compress).
+#pragma once
+
+#include "sim/model/sheet_model.hpp"
+
+#include <functional>
+#include <memory>
+#include <random>
+#include <string>
+
+namespace crumple {
+
+/// Facts about the sheet that stages need: sizes and constants in simulation units.
+struct SheetInfo {
+  double size = 0;    ///< side length (square) or diameter (disk)
+  double area = 0;    ///< reference area
+  double h_eff = 0;   ///< effective thickness sqrt(8 kb/ks)
+  double ks = 0, kb = 0, mass = 0;
+  double spacing = 0; ///< mean edge length
+};
+
+/// Geometry handed between the stages of one cycle.
+struct Apparatus {
+  bool rolled = false;
+  Vec3 axis_point = Vec3::Zero();
+  Vec3 axis_dir = Vec3::UnitZ();
+  double radius = 0;   ///< roll radius
+  double height = 0;   ///< extent of the rolled sheet along its axis (H0 of the experiment)
+};
+
+struct StageContext {
+  SheetModel* model = nullptr;
+  State* state = nullptr;
+  SheetInfo sheet;
+  Apparatus apparatus;
+  int cycle = 1;          ///< 1-based
+  double t_begin = 0;     ///< simulated time when the stage began
+  std::mt19937_64 rng;    ///< the protocol's random stream (seeded by the run seed)
+  /// Turns self-contact on or off (no-op when the run has no contact); stages that switch it
+  /// off must switch it back on in end().
+  std::function<void(bool)> set_contact = [](bool) {};
+
+  /// Largest node speed and the kinetic energy of the current state.
+  double max_speed() const;
+  double kinetic_energy() const;
+  /// Largest |F_i|/m over nodes: the acceleration the quasistatic solver leaves.
+  double max_acceleration() const;
+};
+
+class Stage {
+ public:
+  virtual ~Stage() = default;
+  virtual std::string type() const = 0;
+  virtual void begin(StageContext& ctx) = 0;
+  /// Whether the stop condition is met; called after every chunk of simulated time.
+  virtual bool done(StageContext& ctx) = 0;
+  /// Removes the stage's terms (override to do more, e.g. record the apparatus).
+  virtual void end(StageContext& ctx) { release_terms(ctx); }
+  /// One line for the progress display: the stage's measure and its target.
+  virtual std::string progress(const StageContext& ctx) const { return ""; }
+  /// Cap on the stage's simulated duration (the stage ends there even if its target is not
+  /// reached; the runner warns).
+  double max_duration = 1e30;
+  /// Simulated time between two done() checks.
+  double check_interval = 0.01;
+
+ protected:
+  void own(StageContext& ctx, std::shared_ptr<ForceTerm> term, TermKind kind = TermKind::External);
+  void release_terms(StageContext& ctx);
+
+ private:
+  std::vector<std::shared_ptr<ForceTerm>> terms_;
+};
+
+}  // namespace crumple

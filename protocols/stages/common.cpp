@@ -1,0 +1,41 @@
+// Shared helpers of the built-in stage types (common.hpp).
+#include "protocols/stages/common.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace crumple::stages {
+
+std::vector<ParamSpec> common_params(double max_duration, double check_interval) {
+  using K = ParamSpec::Kind;
+  return {
+      {"max_duration", K::Number, std::to_string(max_duration),
+       "cap on the stage's simulated duration (s); the run warns if the target is not reached",
+       0.0, 1e30, true},
+      {"check_interval", K::Number, std::to_string(check_interval),
+       "simulated time between checks of the stop condition (s)", 0.0, 1e30, true},
+  };
+}
+
+void apply_common(Stage& stage, const StageArgs& args) {
+  stage.max_duration = args.number("max_duration");
+  stage.check_interval = args.number("check_interval");
+}
+
+double reference_acceleration(const StageContext& ctx) {
+  const double lambda = std::sqrt(ctx.model->num_nodes() / ctx.sheet.area);
+  return ctx.sheet.ks / (ctx.sheet.mass * lambda);
+}
+
+bool quiescent(const StageContext& ctx, double ratio) {
+  return ctx.max_acceleration() < ratio * reference_acceleration(ctx);
+}
+
+Vec3 reference_centroid(const Mesh& mesh) { return mesh.ref.rowwise().mean(); }
+
+double smooth_ramp(double s) {
+  s = std::clamp(s, 0.0, 1.0);
+  return s * s * (3.0 - 2.0 * s);
+}
+
+}  // namespace crumple::stages

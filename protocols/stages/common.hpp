@@ -1,0 +1,23 @@
+// Helpers shared by the built-in stage types: the parameters every stage accepts, sheet
+// geometry in the reference frame, and the quiescence test.
+#pragma once
+
+#include "protocols/registry.hpp"
+
+namespace crumple::stages {
+
+/// max_duration and check_interval, accepted by every stage type.
+std::vector<ParamSpec> common_params(double max_duration, double check_interval);
+void apply_common(Stage& stage, const StageArgs& args);
+
+/// Quiescence as in the integrator's switching test: max|F_i|/m below `ratio` times
+/// a_ref = ks/(m lambda), lambda = sqrt(n/A) the linear node density (paper §3.4).
+bool quiescent(const StageContext& ctx, double ratio);
+double reference_acceleration(const StageContext& ctx);
+
+/// Centroid of the reference positions.
+Vec3 reference_centroid(const Mesh& mesh);
+/// Smooth ramp 0 -> 1 over [0, 1] (C^1: 3s^2 - 2s^3), clamped outside.
+double smooth_ramp(double s);
+
+}  // namespace crumple::stages

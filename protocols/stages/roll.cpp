@@ -1,0 +1,139 @@
+// Stage `roll`: wrap the flat sheet into a cylinder of radius R about an in-plane axis
+// (DESIGN.md §6, the first step of each axial-crumpling cycle; paper Fig. 9a).
+//
+// Every node is tethered to a target that follows an isometric bending of the reference sheet:
+// with u the reference coordinate across the axis (centred) and w along it, the target at
+// curvature k is  o + w a + (sin(k u)/k) b + ((1 - cos(k u))/k) z,  and k grows smoothly from 0
+// to 1/R over `duration`. Bending a flat sheet this way stretches nothing, so the tethers only
+// lead the sheet. The axis direction is drawn at random each cycle (the experiment re-rolls the
+// flattened sheet by hand) unless `axis: fixed`. On completion the stage records the roll's axis,
+// radius and height H0 for the compress stage and removes its tethers.
+#include "protocols/stages/common.hpp"
+#include "protocols/terms/tether_term.hpp"
+
+#include <cmath>
+#include <random>
+#include <sstream>
+
+namespace crumple::stages {
+namespace {
+
+class RollStage : public Stage {
+ public:
+  explicit RollStage(const StageArgs& a)
+      : radius_(a.number("radius")),
+        wrap_(a.number("wrap")),
+        random_axis_(a.text("axis") == "random"),
+        angle_(a.number("angle") * M_PI / 180.0),
+        duration_(a.number("duration")),
+        stiffness_(a.number("stiffness")),
+        tolerance_(a.number("tolerance")) {
+    apply_common(*this, a);
+  }
+  std::string type() const override { return "roll"; }
+
+  void begin(StageContext& ctx) override {
+    const Mesh& m = ctx.model->mesh();
+    double phi = angle_;
+    if (random_axis_) phi = std::uniform_real_distribution<double>(0.0, M_PI)(ctx.rng);
+    a_ = Vec3(std::cos(phi), std::sin(phi), 0.0);
+    b_ = Vec3(-std::sin(phi), std::cos(phi), 0.0);
+    const Vec3 c = reference_centroid(m);
+    const Index n = m.num_nodes();
+    u_.resize(n);
+    w_.resize(n);
+    double umin = 1e300, umax = -1e300, wmin = 1e300, wmax = -1e300;
+    for (Index i = 0; i < n; ++i) {
+      const Vec3 r = m.ref.col(i) - c;
+      u_[i] = r.dot(b_);
+      w_[i] = r.dot(a_);
+      umin = std::min(umin, u_[i]), umax = std::max(umax, u_[i]);
+      wmin = std::min(wmin, w_[i]), wmax = std::max(wmax, w_[i]);
+    }
+    const double umid = 0.5 * (umin + umax);
+    for (auto& u : u_) u -= umid;
+    origin_ = c + umid * b_;
+    R_ = radius_ > 0 ? radius_ : (umax - umin) / (2.0 * M_PI * wrap_);
+    height_ = wmax - wmin;
+    wmid_ = 0.5 * (wmin + wmax);
+    t0_ = ctx.t_begin;
+    std::vector<Index> nodes(n);
+    for (Index i = 0; i < n; ++i) nodes[i] = i;
+    auto targets = [this](double t, Eigen::Matrix3Xd& out) {
+      const double k = smooth_ramp((t - t0_) / duration_) / R_;
+      for (Index i = 0; i < out.cols(); ++i) {
+        const double u = u_[i];
+        // sin(ku)/k and (1-cos(ku))/k written to stay accurate as k -> 0.
+        const double ku = k * u;
+        const double s = std::abs(ku) < 1e-8 ? u : std::sin(ku) / k;
+        const double q = std::abs(ku) < 1e-8 ? 0.5 * k * u * u : (1.0 - std::cos(ku)) / k;
+        out.col(i) = origin_ + w_[i] * a_ + s * b_ + q * Vec3::UnitZ();
+      }
+    };
+    // The stiffness ramps over a tenth of the duration so a sheet that is not exactly at its
+    // reference position (after an unfold) is not yanked.
+    tethers_ = std::make_shared<TetherTerm>(std::move(nodes), targets, stiffness_ * ctx.sheet.ks,
+                                            t0_, 0.1 * duration_);
+    own(ctx, tethers_);
+  }
+
+  bool done(StageContext& ctx) override {
+    const double t = ctx.state->t;
+    return t >= t0_ + duration_ &&
+           tethers_->max_deviation(*ctx.state) <= tolerance_ * ctx.sheet.spacing;
+  }
+
+  void end(StageContext& ctx) override {
+    ctx.apparatus.rolled = true;
+    ctx.apparatus.axis_dir = a_;
+    ctx.apparatus.axis_point = origin_ + R_ * Vec3::UnitZ() + wmid_ * a_;
+    ctx.apparatus.radius = R_;
+    ctx.apparatus.height = height_;
+    release_terms(ctx);
+  }
+
+  std::string progress(const StageContext& ctx) const override {
+    std::ostringstream os;
+    const double k = smooth_ramp((ctx.state->t - t0_) / duration_) / R_;
+    os << "curvature " << k * R_ << " of 1/R, R = " << R_;
+    return os.str();
+  }
+
+ private:
+  double radius_, wrap_;
+  bool random_axis_;
+  double angle_, duration_, stiffness_, tolerance_;
+  Vec3 a_, b_, origin_;
+  double R_ = 0, height_ = 0, wmid_ = 0, t0_ = 0;
+  std::vector<double> u_, w_;
+  std::shared_ptr<TetherTerm> tethers_;
+};
+
+}  // namespace
+
+StageType roll_stage_type() {
+  using K = ParamSpec::Kind;
+  StageType t;
+  t.name = "roll";
+  t.help = "wrap the flat sheet into a cylinder about an in-plane axis (random each cycle)";
+  t.params = {
+      {"radius", K::Number, "0", "roll radius; 0: the sheet's width/(2 pi wrap)", 0.0},
+      {"wrap", K::Number, "0.9", "fraction of a full turn the sheet covers when radius = 0", 0.05,
+       1.0},
+      {"axis", K::Text, "random", "roll axis: drawn uniformly each cycle, or fixed at `angle`", 0,
+       0, false, {"random", "fixed"}},
+      {"angle", K::Number, "0", "axis angle from the x axis in degrees (axis: fixed)"},
+      {"duration", K::Number, "0.2", "time to bend from flat to the full roll (s)", 0.0, 1e30,
+       true},
+      {"stiffness", K::Number, "0.02", "tether stiffness per node, in units of ks", 0.0, 1e30,
+       true},
+      {"tolerance", K::Number, "0.5",
+       "done when every node is within this many mean edge lengths of its target", 0.0, 1e30,
+       true},
+  };
+  for (auto& p : common_params(10.0, 0.01)) t.params.push_back(p);
+  t.make = [](const StageArgs& a) { return std::make_unique<RollStage>(a); };
+  return t;
+}
+
+}  // namespace crumple::stages
