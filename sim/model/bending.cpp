@@ -22,9 +22,11 @@ void BendingTerm::update_cache(const State& s) const {
     const auto& hg = mesh_->hinges[h];
     const auto& nd = hg.nodes;
     HingeCache& c = cache_[h];
-    c.theta = bend_angle_derivatives(node(s.x, nd[0]), node(s.x, nd[1]), node(s.x, nd[2]),
-                                     node(s.x, nd[3]), c.grad, nullptr);
-    const double sh = std::sin(0.5 * c.theta), ch = std::cos(0.5 * c.theta);
+    const HalfAngle ha = bend_half_angle_derivatives(node(s.x, nd[0]), node(s.x, nd[1]),
+                                                     node(s.x, nd[2]), node(s.x, nd[3]), c.grad,
+                                                     nullptr);
+    const double sh = ha.sin_half, ch = ha.cos_half;
+    c.cos_half = ch;
     c.c = 2.0 * sh;
     const double k = kb_ * hg.rest_factor;
     const double d = c.c - s.p[h];
@@ -58,32 +60,44 @@ void BendingTerm::add_force(const State& s, VecX& f) const {
 }
 
 void BendingTerm::add_jacobians(const State& s, Jacobians& J) const {
-  update_cache(s);
   double* val = J.Hx.valuePtr();
   if (assembly_ == Assembly::PerHinge) {
+    // Per hinge: gradient and Hessian of theta for the whole stencil, then 16 blocks.
+    const bool with_hp = J.Hp.rows() == 3 * mesh_->num_nodes();
+    if (with_hp) update_cache(s);
     for_each_colored(hinge_colors_, [&](Index h) {
-      const auto& nd = mesh_->hinges[h].nodes;
-      const HingeCache& c = cache_[h];
+      const auto& hg = mesh_->hinges[h];
+      const auto& nd = hg.nodes;
       Vec12 g;
       Mat12 H;
-      bend_angle_derivatives(node(s.x, nd[0]), node(s.x, nd[1]), node(s.x, nd[2]),
-                             node(s.x, nd[3]), g, &H);
-      H *= c.zeta;
-      H.noalias() += c.xi * g * g.transpose();
+      const HalfAngle ha = bend_half_angle_derivatives(node(s.x, nd[0]), node(s.x, nd[1]),
+                                                       node(s.x, nd[2]), node(s.x, nd[3]), g, &H);
+      const double k = kb_ * hg.rest_factor;
+      const double d = 2.0 * ha.sin_half - s.p[h];
+      H *= k * d * ha.cos_half;
+      H.noalias() += (k * (ha.cos_half * ha.cos_half - 0.5 * d * ha.sin_half)) * g * g.transpose();
       const auto& sl = hinge_slots_[h];
       for (int a = 0; a < 4; ++a)
         for (int b = 0; b < 4; ++b) add_block(val, sl[4 * a + b], H.block<3, 3>(3 * a, 3 * b));
     });
   } else {
-    // zeta H(theta): each triangle sums the half-hinge terms of its interior edges, weighted by
-    // their zeta, into S_a (scalars) and G_ab (in-plane vectors); its 9 blocks are then
-    // S_a dn_b n^T + n G_ab^T, written once.
+    update_cache(s);
+    // Per triangle (bending-derivatives.md §6.1): each triangle sums, over its interior edges,
+    // the zeta-weighted half-hinge terms into S_a (scalars) and G_ab (in-plane vectors), and the
+    // part of xi grad(theta) grad(theta)^T whose two nodes lie in this triangle into local
+    // blocks (pairs on the hinge edge are taken by T1 only); its 9 blocks, S_a dn_b n^T +
+    // n G_ab^T + local, are written once. A hinge pass then adds only the two blocks that couple
+    // x2 and x3, which share no triangle.
     for_each_colored(tri_colors_, [&](Index t) {
       const auto& tri = mesh_->triangles[t];
       double S[3] = {0, 0, 0};
       Vec3 G[3][3];
-      for (auto& row : G)
-        for (auto& g : row) g.setZero();
+      Mat3 L[3][3];
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+          G[a][b].setZero();
+          L[a][b].setZero();
+        }
       HalfHinge hh;
       bool any = false;
       for (int k = 0; k < 3; ++k) {
@@ -92,10 +106,18 @@ void BendingTerm::add_jacobians(const State& s, Jacobians& J) const {
         const int loc[3] = {(k + 1) % 3, (k + 2) % 3, k};  // half-hinge (p, q, r) -> vertex
         half_hinge(node(s.x, tri[loc[0]]), node(s.x, tri[loc[1]]), node(s.x, tri[loc[2]]), hh,
                    true);
-        const double z = cache_[hinge].zeta;
+        const HingeCache& hc = cache_[hinge];
+        const bool first = mesh_->hinges[hinge].tris[0] == t;
+        // Half-hinge (p, q, r) is (x0, x1, x2) in T1 and (x1, x0, x3) in T2.
+        const int hidx[3] = {first ? 0 : 1, first ? 1 : 0, first ? 2 : 3};
         for (int a = 0; a < 3; ++a) {
-          S[loc[a]] += z * hh.s[a];
-          for (int b = 0; b < 3; ++b) G[loc[a]][loc[b]] += z * hh.ds[a][b];
+          S[loc[a]] += hc.zeta * hh.s[a];
+          const Vec3 ga = hc.xi * hc.grad.segment<3>(3 * hidx[a]);
+          for (int b = 0; b < 3; ++b) {
+            G[loc[a]][loc[b]] += hc.zeta * hh.ds[a][b];
+            if (!first && a < 2 && b < 2) continue;
+            L[loc[a]][loc[b]].noalias() += ga * hc.grad.segment<3>(3 * hidx[b]).transpose();
+          }
         }
         any = true;
       }
@@ -108,17 +130,17 @@ void BendingTerm::add_jacobians(const State& s, Jacobians& J) const {
       const Vec3 dn[3] = {n.cross(x1 - x2) / a2, n.cross(x2 - x0) / a2, n.cross(x0 - x1) / a2};
       const auto& sl = tri_slots_[t];
       for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-          add_block(val, sl[3 * a + b],
-                    S[a] * dn[b] * n.transpose() + n * G[a][b].transpose());
+        for (int b = 0; b < 3; ++b) {
+          L[a][b].noalias() += S[a] * dn[b] * n.transpose();
+          L[a][b].noalias() += n * G[a][b].transpose();
+          add_block(val, sl[3 * a + b], L[a][b]);
+        }
     });
     for_each_colored(hinge_colors_, [&](Index h) {
       const HingeCache& c = cache_[h];
-      const auto& sl = hinge_slots_[h];
-      for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b)
-          add_block(val, sl[4 * a + b],
-                    c.xi * c.grad.segment<3>(3 * a) * c.grad.segment<3>(3 * b).transpose());
+      const Mat3 B = c.xi * c.grad.segment<3>(6) * c.grad.segment<3>(9).transpose();
+      add_block(val, hinge_slots_[h][4 * 2 + 3], B);
+      add_block(val, hinge_slots_[h][4 * 3 + 2], B.transpose());
     });
   }
 
@@ -129,7 +151,7 @@ void BendingTerm::add_jacobians(const State& s, Jacobians& J) const {
     trip.reserve(12 * nh);
     for (Index h = 0; h < nh; ++h) {
       const auto& hg = mesh_->hinges[h];
-      const double w = -kb_ * hg.rest_factor * std::cos(0.5 * cache_[h].theta);
+      const double w = -kb_ * hg.rest_factor * cache_[h].cos_half;
       for (int a = 0; a < 4; ++a)
         for (int d = 0; d < 3; ++d)
           trip.emplace_back(3 * hg.nodes[a] + d, h, w * cache_[h].grad[3 * a + d]);
@@ -158,10 +180,11 @@ void BendingTerm::curvature_gradients(const VecX& x, VecX& c, std::vector<Vec12>
 #pragma omp parallel for schedule(static)
   for (Index h = 0; h < nh; ++h) {
     const auto& nd = mesh_->hinges[h].nodes;
-    const double th = bend_angle_derivatives(node(x, nd[0]), node(x, nd[1]), node(x, nd[2]),
-                                             node(x, nd[3]), grad[h], nullptr);
-    c[h] = 2.0 * std::sin(0.5 * th);
-    grad[h] *= std::cos(0.5 * th);
+    const HalfAngle ha = bend_half_angle_derivatives(node(x, nd[0]), node(x, nd[1]),
+                                                     node(x, nd[2]), node(x, nd[3]), grad[h],
+                                                     nullptr);
+    c[h] = 2.0 * ha.sin_half;
+    grad[h] *= ha.cos_half;
   }
 }
 

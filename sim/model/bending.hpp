@@ -42,7 +42,7 @@ class BendingTerm : public ForceTerm {
 
  private:
   struct HingeCache {
-    double theta, c, zeta, xi;
+    double cos_half, c, zeta, xi;
     Vec12 grad;  // d theta / dx over the hinge's 4 nodes
   };
   void update_cache(const State& s) const;
@@ -50,7 +50,7 @@ class BendingTerm : public ForceTerm {
   const Mesh* mesh_;
   double kb_;
   Assembly assembly_;
-  std::vector<std::vector<Index>> hinge_colors_, tri_colors_;
+  PatchColoring hinge_colors_, tri_colors_;
   std::vector<std::array<BlockSlot, 16>> hinge_slots_;
   std::vector<std::array<BlockSlot, 9>> tri_slots_;
   mutable std::vector<HingeCache> cache_;

@@ -85,4 +85,45 @@ std::vector<std::vector<Index>> color_elements(Index num_nodes,
   return groups;
 }
 
+PatchColoring color_patches(Index num_nodes, const std::vector<std::array<Index, 4>>& elems,
+                            int nodes_per_elem, Index patch_size) {
+  const Index num_patches = (num_nodes + patch_size - 1) / patch_size;
+  std::vector<std::vector<Index>> members(num_patches);
+  std::vector<std::vector<Index>> touching(num_nodes);  // patches whose elements touch a node
+  for (Index e = 0; e < static_cast<Index>(elems.size()); ++e) {
+    Index lo = elems[e][0];
+    for (int k = 1; k < nodes_per_elem; ++k) lo = std::min(lo, elems[e][k]);
+    const Index patch = lo / patch_size;
+    members[patch].push_back(e);
+    for (int k = 0; k < nodes_per_elem; ++k) {
+      auto& t = touching[elems[e][k]];
+      if (t.empty() || t.back() != patch) t.push_back(patch);
+    }
+  }
+  std::vector<std::vector<Index>> conflicts(num_patches);
+  for (auto& t : touching) {
+    std::sort(t.begin(), t.end());
+    t.erase(std::unique(t.begin(), t.end()), t.end());
+    for (std::size_t a = 0; a < t.size(); ++a)
+      for (std::size_t b = a + 1; b < t.size(); ++b) {
+        conflicts[t[a]].push_back(t[b]);
+        conflicts[t[b]].push_back(t[a]);
+      }
+  }
+  std::vector<int> color(num_patches, -1);
+  PatchColoring out;
+  for (Index p = 0; p < num_patches; ++p) {
+    if (members[p].empty()) continue;
+    std::vector<char> used(out.size() + 1, 0);
+    for (Index q : conflicts[p])
+      if (color[q] >= 0) used[color[q]] = 1;
+    int c = 0;
+    while (used[c]) ++c;
+    color[p] = c;
+    if (c >= static_cast<int>(out.size())) out.resize(c + 1);
+    out[c].push_back(std::move(members[p]));
+  }
+  return out;
+}
+
 }  // namespace crumple

@@ -62,4 +62,14 @@ std::vector<std::vector<Index>> color_elements(Index num_nodes,
                                                const std::vector<std::array<Index, 4>>& elems,
                                                int nodes_per_elem);
 
+/// Elements grouped for cache-friendly lock-free assembly: colours -> patches -> elements.
+/// Nodes are cut into patches of consecutive indices (compact in space on the Hilbert order);
+/// each element belongs to the patch of its smallest node; patches whose elements share a node
+/// get different colours. One thread handles a whole patch, so its writes stay in cache, and the
+/// summation order into every entry (colour by colour, patch order fixed) does not depend on the
+/// number of threads.
+using PatchColoring = std::vector<std::vector<std::vector<Index>>>;
+PatchColoring color_patches(Index num_nodes, const std::vector<std::array<Index, 4>>& elems,
+                            int nodes_per_elem, Index patch_size = 96);
+
 }  // namespace crumple

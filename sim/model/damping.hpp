@@ -44,7 +44,7 @@ class InternalDampingTerm : public ForceTerm {
  private:
   const Mesh* mesh_;
   double b_;
-  std::vector<std::vector<Index>> colors_;
+  PatchColoring colors_;
   std::vector<std::array<BlockSlot, 4>> slots_;
 };
 

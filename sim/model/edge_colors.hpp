@@ -7,20 +7,22 @@
 
 namespace crumple {
 
-std::vector<std::vector<Index>> color_edges(const Mesh& mesh);
-std::vector<std::vector<Index>> color_triangles(const Mesh& mesh);
-std::vector<std::vector<Index>> color_hinges(const Mesh& mesh);
+PatchColoring color_edges(const Mesh& mesh);
+PatchColoring color_triangles(const Mesh& mesh);
+PatchColoring color_hinges(const Mesh& mesh);
 
 /// Slots of the four blocks (ii, ij, ji, jj) of a two-node element.
 std::array<BlockSlot, 4> pair_slots(const BlockPattern& p, Index i, Index j);
 
-/// Runs body(element) over all elements, colour by colour, in parallel within a colour.
+/// Runs body(element) over all elements: colour by colour, the patches of one colour in
+/// parallel, the elements of a patch in order on one thread.
 template <class Body>
-void for_each_colored(const std::vector<std::vector<Index>>& colors, Body&& body) {
-  for (const auto& group : colors) {
-    const Index m = static_cast<Index>(group.size());
-#pragma omp parallel for schedule(static)
-    for (Index k = 0; k < m; ++k) body(group[k]);
+void for_each_colored(const PatchColoring& colors, Body&& body) {
+  for (const auto& patches : colors) {
+    const Index m = static_cast<Index>(patches.size());
+#pragma omp parallel for schedule(dynamic, 1)
+    for (Index k = 0; k < m; ++k)
+      for (Index e : patches[k]) body(e);
   }
 }
 

@@ -53,11 +53,8 @@ double bend_angle(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3
   return std::atan2(n1.cross(n2).dot(e0.normalized()), n1.dot(n2));
 }
 
-double bend_angle_derivatives(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3,
-                              Vec12& grad, Mat12* hess) {
-  HalfHinge t1, t2;
-  half_hinge(x0, x1, x2, t1, hess != nullptr);  // local (0,1,2) -> hinge (0,1,2)
-  half_hinge(x1, x0, x3, t2, hess != nullptr);  // local (0,1,2) -> hinge (1,0,3)
+namespace {
+void assemble_hinge(const HalfHinge& t1, const HalfHinge& t2, Vec12& grad, Mat12* hess) {
   static constexpr int map1[3] = {0, 1, 2};
   static constexpr int map2[3] = {1, 0, 3};
   grad.setZero();
@@ -73,6 +70,28 @@ double bend_angle_derivatives(const Vec3& x0, const Vec3& x1, const Vec3& x2, co
           hess->block<3, 3>(3 * map[k], 3 * map[j]) +=
               t->s[k] * t->dn[j] * t->n.transpose() + t->n * t->ds[k][j].transpose();
   }
+}
+}  // namespace
+
+HalfAngle bend_half_angle_derivatives(const Vec3& x0, const Vec3& x1, const Vec3& x2,
+                                      const Vec3& x3, Vec12& grad, Mat12* hess) {
+  HalfHinge t1, t2;
+  half_hinge(x0, x1, x2, t1, hess != nullptr);  // local (0,1,2) -> hinge (0,1,2)
+  half_hinge(x1, x0, x3, t2, hess != nullptr);  // local (0,1,2) -> hinge (1,0,3)
+  assemble_hinge(t1, t2, grad, hess);
+  HalfAngle h;
+  const double sign = t1.n.cross(t2.n).dot(x1 - x0) < 0 ? -1.0 : 1.0;
+  h.sin_half = 0.5 * sign * (t1.n - t2.n).norm();
+  h.cos_half = 0.5 * (t1.n + t2.n).norm();
+  return h;
+}
+
+double bend_angle_derivatives(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3,
+                              Vec12& grad, Mat12* hess) {
+  HalfHinge t1, t2;
+  half_hinge(x0, x1, x2, t1, hess != nullptr);
+  half_hinge(x1, x0, x3, t2, hess != nullptr);
+  assemble_hinge(t1, t2, grad, hess);
   const Vec3 e0 = x1 - x0;
   return std::atan2(t1.n.cross(t2.n).dot(e0.normalized()), t1.n.dot(t2.n));
 }

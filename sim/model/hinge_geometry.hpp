@@ -40,6 +40,16 @@ double bend_angle(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3
 using Vec12 = Eigen::Matrix<double, 12, 1>;
 using Mat12 = Eigen::Matrix<double, 12, 12>;
 
+/// Half-angle sines and cosines without trigonometric calls: with unit normals n1, n2,
+/// sin(theta/2) = sign |n1 - n2|/2 and cos(theta/2) = |n1 + n2|/2 (bending-derivatives.md §2).
+struct HalfAngle {
+  double sin_half = 0, cos_half = 1;
+};
+
+/// theta's half-angle functions, its gradient (12) and optionally its Hessian (12 x 12).
+HalfAngle bend_half_angle_derivatives(const Vec3& x0, const Vec3& x1, const Vec3& x2,
+                                      const Vec3& x3, Vec12& grad, Mat12* hess);
+
 /// theta, its gradient (12) and optionally its Hessian (12 x 12) for one hinge.
 double bend_angle_derivatives(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3,
                               Vec12& grad, Mat12* hess);

@@ -28,7 +28,7 @@ enum class TermKind { Stretch, Bend, Dissipative, Contact, External };
 class SheetModel {
  public:
   SheetModel(const Mesh& mesh, const ModelParams& params,
-             BendingTerm::Assembly assembly = BendingTerm::Assembly::PerTriangle);
+             BendingTerm::Assembly assembly = BendingTerm::Assembly::PerHinge);
 
   const Mesh& mesh() const { return mesh_; }
   const ModelParams& params() const { return params_; }

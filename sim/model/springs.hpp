@@ -27,7 +27,7 @@ class SpringTerm : public ForceTerm {
  private:
   const Mesh* mesh_;
   double ks_;
-  std::vector<std::vector<Index>> colors_;
+  PatchColoring colors_;
   std::vector<std::array<BlockSlot, 4>> slots_;  // ii, ij, ji, jj
 };
 
