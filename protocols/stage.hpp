@@ -53,6 +53,10 @@ struct StageContext {
   double max_acceleration() const;
 };
 
+/// Stages are rebuilt from their parameters for every cycle. Everything a stage decides in
+/// begin() must depend only on the context at its start (state, time, apparatus, random stream)
+/// and its state changes in done() only on the time and state at that check: a resumed run
+/// replays begin() and the last done() to rebuild it exactly.
 class Stage {
  public:
   virtual ~Stage() = default;
@@ -64,6 +68,8 @@ class Stage {
   virtual void end(StageContext& ctx) { release_terms(ctx); }
   /// One line for the progress display: the stage's measure and its target.
   virtual std::string progress(const StageContext& ctx) const { return ""; }
+  /// Fraction of the stage done, in [0, 1], or a negative number when unknown (for the ETA).
+  virtual double fraction(const StageContext& ctx) const { return -1.0; }
   /// Cap on the stage's simulated duration (the stage ends there even if its target is not
   /// reached; the runner warns).
   double max_duration = 1e30;

@@ -12,6 +12,7 @@
 #include "protocols/terms/wall_term.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <sstream>
 
 namespace crumple::stages {
@@ -78,6 +79,10 @@ class CompressStage : public Stage {
     std::ostringstream os;
     os << "compaction " << gap(ctx.state->t) / h0_ << " -> " << compaction_;
     return os.str();
+  }
+
+  double fraction(const StageContext& ctx) const override {
+    return std::clamp((1.0 - gap(ctx.state->t) / h0_) / (1.0 - compaction_), 0.0, 1.0);
   }
 
  private:

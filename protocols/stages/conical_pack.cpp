@@ -7,6 +7,7 @@
 #include "protocols/terms/wall_term.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <sstream>
 
 namespace crumple::stages {
@@ -52,6 +53,10 @@ class ConicalPackStage : public Stage {
     std::ostringstream os;
     os << "pull " << std::min(travel_, speed_ * (ctx.state->t - t0_)) << " of " << travel_;
     return os.str();
+  }
+
+  double fraction(const StageContext& ctx) const override {
+    return std::clamp(speed_ * (ctx.state->t - t0_) / travel_, 0.0, 1.0);
   }
 
  private:

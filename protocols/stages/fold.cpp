@@ -8,6 +8,7 @@
 #include "protocols/terms/tether_term.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <sstream>
 
 namespace crumple::stages {
@@ -57,6 +58,10 @@ class FoldStage : public Stage {
     os << "fold " << angle_ * smooth_ramp((ctx.state->t - t0_) / duration_) * 180.0 / M_PI
        << " of " << angle_ * 180.0 / M_PI << " deg";
     return os.str();
+  }
+
+  double fraction(const StageContext& ctx) const override {
+    return std::clamp((ctx.state->t - t0_) / duration_, 0.0, 1.0);
   }
 
  private:

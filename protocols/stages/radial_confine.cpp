@@ -5,6 +5,7 @@
 #include "protocols/stages/common.hpp"
 #include "protocols/terms/wall_term.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 namespace crumple::stages {
@@ -32,6 +33,10 @@ class RadialConfineStage : public Stage {
     std::ostringstream os;
     os << "cutoff radius " << wall_->radius(ctx.state->t);
     return os.str();
+  }
+
+  double fraction(const StageContext& ctx) const override {
+    return std::clamp((ctx.state->t - t0_) / duration_, 0.0, 1.0);
   }
 
  private:

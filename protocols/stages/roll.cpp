@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <random>
+#include <algorithm>
 #include <sstream>
 
 namespace crumple::stages {
@@ -97,6 +98,10 @@ class RollStage : public Stage {
     const double k = smooth_ramp((ctx.state->t - t0_) / duration_) / R_;
     os << "curvature " << k * R_ << " of 1/R, R = " << R_;
     return os.str();
+  }
+
+  double fraction(const StageContext& ctx) const override {
+    return std::clamp((ctx.state->t - t0_) / duration_, 0.0, 1.0);
   }
 
  private:

@@ -6,6 +6,7 @@
 #include "protocols/terms/tether_term.hpp"
 #include "protocols/terms/wall_term.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 namespace crumple::stages {
@@ -46,6 +47,10 @@ class SphericalStampStage : public Stage {
     std::ostringstream os;
     os << "stamp travel " << std::min(travel_, speed_ * (ctx.state->t - t0_)) << " of " << travel_;
     return os.str();
+  }
+
+  double fraction(const StageContext& ctx) const override {
+    return std::clamp(speed_ * (ctx.state->t - t0_) / travel_, 0.0, 1.0);
   }
 
  private:

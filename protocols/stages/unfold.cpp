@@ -52,9 +52,12 @@ class UnfoldStage : public Stage {
     phase_ = 0;
   }
 
+  // Phase changes happen at fixed times (t0 + open_time, then + press_time), whatever the
+  // check grid, so a resumed run that replays done() at its checkpoint rebuilds the same terms.
   bool done(StageContext& ctx) override {
     const double t = ctx.state->t;
-    if (phase_ == 0 && t >= t0_ + open_time_) {
+    const double t_press = t0_ + open_time_, t_relax = t_press + press_time_;
+    if (phase_ == 0 && t >= t_press) {
       // Press: plates start 5 h_eff above and below the plane and close to the gap.
       const double h = ctx.sheet.h_eff;
       const double start = 5.0 * h, end = 0.5 * press_gap_ * h;
@@ -63,20 +66,20 @@ class UnfoldStage : public Stage {
       const Index n = ctx.model->num_nodes();
       own(ctx, std::make_shared<WallTerm>(
                    std::make_shared<PlaneWall>(Vec3(0, 0, -start), Vec3::UnitZ(),
-                                               LinearMotion{0.0, speed, t, start - end}),
+                                               LinearMotion{0.0, speed, t_press, start - end}),
                    n, k, h));
       own(ctx, std::make_shared<WallTerm>(
                    std::make_shared<PlaneWall>(Vec3(0, 0, start), -Vec3::UnitZ(),
-                                               LinearMotion{0.0, speed, t, start - end}),
+                                               LinearMotion{0.0, speed, t_press, start - end}),
                    n, k, h));
       phase_ = 1;
-      t_phase_ = t;
-    } else if (phase_ == 1 && t >= t_phase_ + press_time_) {
+    }
+    if (phase_ == 1 && t >= t_relax) {
       release_terms(ctx);
       if (!contact_) ctx.set_contact(true);
       phase_ = 2;
-      t_phase_ = t;
-    } else if (phase_ == 2 && t >= t_phase_ + 0.1 * open_time_) {
+    }
+    if (phase_ == 2 && t >= t_relax + 0.1 * open_time_) {
       last_ratio_ = ctx.max_acceleration() / reference_acceleration(ctx);
       return last_ratio_ < threshold_;
     }
@@ -100,7 +103,7 @@ class UnfoldStage : public Stage {
   double open_time_, press_time_, press_gap_, stiffness_;
   bool contact_;
   double threshold_;
-  double t0_ = 0, t_phase_ = 0, last_ratio_ = 1.0 / 0.0;
+  double t0_ = 0, last_ratio_ = 1.0 / 0.0;
   int phase_ = 0;
   Eigen::Matrix3Xd start_, flat_;
   std::shared_ptr<TetherTerm> tethers_;

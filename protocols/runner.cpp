@@ -1,0 +1,196 @@
+// The protocol runner (runner.hpp).
+#include "protocols/runner.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace crumple {
+
+std::string rng_state(const std::mt19937_64& rng) {
+  std::ostringstream os;
+  os << rng;
+  return os.str();
+}
+
+void set_rng_state(std::mt19937_64& rng, const std::string& text) {
+  std::istringstream is(text);
+  is >> rng;
+  if (!is) throw InputError("checkpoint: corrupt random-number state");
+}
+
+ProtocolRunner::ProtocolRunner(SheetModel& model, Stepper& stepper, StageFactory make,
+                               int num_stages, SheetInfo sheet, RunnerSettings settings)
+    : model_(model), stepper_(stepper), make_(std::move(make)), num_stages_(num_stages),
+      sheet_(sheet), cfg_(settings) {}
+
+void ProtocolRunner::set_contact_switch(std::function<void(bool)> set, std::function<bool()> get) {
+  set_contact_ = std::move(set);
+  contact_on_ = std::move(get);
+}
+
+Checkpoint ProtocolRunner::make_checkpoint(const StageContext& ctx, int cycle, int stage,
+                                           bool in_stage, const State& stage_begin,
+                                           const std::string& rng_begin,
+                                           bool contact_begin) const {
+  Checkpoint c;
+  c.cycle = cycle;
+  c.stage = stage;
+  c.in_stage = in_stage;
+  c.stage_t_begin = ctx.t_begin;
+  if (in_stage) c.stage_begin = stage_begin;
+  c.rng_at_stage_begin = in_stage ? rng_begin : rng_state(ctx.rng);
+  c.contact_at_stage_begin = in_stage ? contact_begin : contact_on_();
+  c.apparatus = ctx.apparatus;
+  c.state = *ctx.state;
+  c.stepper = stepper_.save();
+  c.next_frame_t = next_frame_;
+  return c;
+}
+
+void ProtocolRunner::progress(const Stage& stage, const StageContext& ctx, int k, bool force) {
+  if (cfg_.quiet) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (!force && std::chrono::duration<double>(now - last_progress_).count() < cfg_.progress_wall_s)
+    return;
+  last_progress_ = now;
+  const double wall = std::chrono::duration<double>(now - start_).count();
+  const double stage_wall = std::chrono::duration<double>(now - stage_wall_start_).count();
+  std::ostringstream os;
+  os << "cycle " << ctx.cycle << "/" << cfg_.cycles << "  stage " << k + 1 << "/" << num_stages_
+     << " " << stage.type() << "  t=" << ctx.state->t << " s";
+  const std::string p = stage.progress(ctx);
+  if (!p.empty()) os << "  [" << p << "]";
+  os << "  " << stepper_.status() << "  " << static_cast<long>(stepper_.steps() / std::max(wall, 1e-9))
+     << " steps/s";
+  const double f = stage.fraction(ctx);
+  if (f > 0.01 && f < 1.0) os << "  stage ETA " << static_cast<long>(stage_wall * (1 - f) / f) << " s";
+  os << "  wall " << static_cast<long>(wall) << " s";
+  std::fprintf(stderr, "%s\n", os.str().c_str());
+}
+
+bool ProtocolRunner::run(State& s, RunSink& sink, const Checkpoint* resume) {
+  start_ = last_progress_ = stage_wall_start_ = std::chrono::steady_clock::now();
+  auto last_checkpoint = start_;
+  StageContext ctx;
+  ctx.model = &model_;
+  ctx.state = &s;
+  ctx.sheet = sheet_;
+  ctx.rng.seed(cfg_.seed);
+  ctx.set_contact = set_contact_;
+
+  int c0 = 1, k0 = 0;
+  if (resume) {
+    c0 = resume->cycle;
+    k0 = resume->stage;
+    ctx.apparatus = resume->apparatus;
+    next_frame_ = resume->next_frame_t;
+  } else {
+    next_frame_ = s.t;
+    if (s.t >= next_frame_) {
+      sink.frame(s, "initial", 0);
+      next_frame_ += cfg_.frame_dt;
+    }
+  }
+  const double eps = 1e-12;
+
+  for (int c = c0; c <= cfg_.cycles; ++c) {
+    ctx.cycle = c;
+    if (!(resume && c == c0)) ctx.apparatus = Apparatus{};
+    for (int k = (c == c0 ? k0 : 0); k < num_stages_; ++k) {
+      std::unique_ptr<Stage> stage = make_(k);
+      State stage_begin;
+      std::string rng_begin;
+      bool contact_begin;
+      stage_wall_start_ = std::chrono::steady_clock::now();
+      if (resume && c == c0 && k == k0 && resume->in_stage) {
+        // Rebuild the stage exactly as it was built, then return to the checkpointed state.
+        set_rng_state(ctx.rng, resume->rng_at_stage_begin);
+        set_contact_(resume->contact_at_stage_begin);
+        stage_begin = resume->stage_begin;
+        rng_begin = resume->rng_at_stage_begin;
+        contact_begin = resume->contact_at_stage_begin;
+        s = stage_begin;
+        ctx.t_begin = resume->stage_t_begin;
+        stage->begin(ctx);
+        s = resume->state;
+        stage->done(ctx);  // replays the last check: stage-internal phases as they were
+        model_.rebuild_pattern();
+        stepper_.restore(resume->stepper);
+      } else {
+        if (resume && c == c0 && k == k0) {
+          set_rng_state(ctx.rng, resume->rng_at_stage_begin);
+          set_contact_(resume->contact_at_stage_begin);
+          s = resume->state;
+          stepper_.restore(resume->stepper);
+        }
+        stage_begin = s;
+        rng_begin = rng_state(ctx.rng);
+        contact_begin = contact_on_();
+        ctx.t_begin = s.t;
+        stage->begin(ctx);
+        model_.rebuild_pattern();
+        stepper_.restart();
+      }
+      progress(*stage, ctx, k, true);
+
+      bool finished = false;
+      while (!finished) {
+        if (s.t >= cfg_.t_max - eps) {
+          stage->end(ctx);
+          if (!cfg_.quiet) std::fprintf(stderr, "stopped at t_max = %g s\n", cfg_.t_max);
+          sink.checkpoint(make_checkpoint(ctx, c, k, false, s, rng_begin, contact_begin));
+          return false;
+        }
+        const double ci = stage->check_interval;
+        const double since = s.t - ctx.t_begin;
+        const double next_check = ctx.t_begin + (std::floor(since / ci + 1e-9) + 1.0) * ci;
+        const double t_end = std::min({next_check, next_frame_, cfg_.t_max,
+                                       ctx.t_begin + stage->max_duration});
+        try {
+          stepper_.advance_to(s, t_end);
+        } catch (const NumericalFailure& e) {
+          sink.checkpoint(make_checkpoint(ctx, c, k, true, stage_begin, rng_begin, contact_begin));
+          std::ostringstream os;
+          os << "stage " << stage->type() << " (cycle " << c << ", stage " << k + 1 << "), t = "
+             << s.t << " s: " << e.what();
+          throw NumericalFailure(os.str());
+        }
+        if (s.t >= next_frame_ - eps) {
+          sink.frame(s, stage->type(), c);
+          next_frame_ += cfg_.frame_dt;
+        }
+        finished = stage->done(ctx);
+        progress(*stage, ctx, k, false);
+        if (!finished && s.t >= ctx.t_begin + stage->max_duration - eps) {
+          if (!cfg_.quiet)
+            std::fprintf(stderr, "warning: stage %s (cycle %d) reached max_duration %g s before "
+                                 "its target [%s]\n",
+                         stage->type().c_str(), c, stage->max_duration,
+                         stage->progress(ctx).c_str());
+          finished = true;
+        }
+        const auto now = std::chrono::steady_clock::now();
+        if (!finished &&
+            std::chrono::duration<double>(now - last_checkpoint).count() >= cfg_.checkpoint_wall_s) {
+          sink.checkpoint(make_checkpoint(ctx, c, k, true, stage_begin, rng_begin, contact_begin));
+          last_checkpoint = now;
+        }
+      }
+      stage->end(ctx);
+      progress(*stage, ctx, k, true);
+      stepper_.restart();
+      if (k + 1 == num_stages_) {
+        sink.cycle_end(c, s);
+        ctx.cycle = c + 1;
+        sink.checkpoint(make_checkpoint(ctx, c + 1, 0, false, s, rng_begin, contact_begin));
+      } else {
+        sink.checkpoint(make_checkpoint(ctx, c, k + 1, false, s, rng_begin, contact_begin));
+      }
+      last_checkpoint = std::chrono::steady_clock::now();
+    }
+  }
+  return true;
+}
+
+}  // namespace crumple

@@ -1,0 +1,107 @@
+// The protocol runner: cycles of stages driving a time stepper (DESIGN.md §6; issue 5).
+//
+// The runner owns no physics and no files. It builds each stage from its parameters, lets it add
+// its terms, advances the stepper in chunks on a fixed time grid (the stage's check interval
+// from its start, and the frame interval from t = 0), asks the stage whether it is done, and
+// hands frames, cycle ends and checkpoints to a RunSink. Because chunk ends lie on a fixed grid
+// and stages are rebuilt from the context at their start, a run resumed from a checkpoint takes
+// exactly the steps of an uninterrupted one.
+#pragma once
+
+#include "protocols/registry.hpp"
+
+#include <chrono>
+#include <functional>
+
+namespace crumple {
+
+/// What the runner needs of a time integrator.
+class Stepper {
+ public:
+  virtual ~Stepper() = default;
+  /// Advances s to exactly t_end; throws NumericalFailure, leaving s at the last accepted step.
+  virtual void advance_to(State& s, double t_end) = 0;
+  /// Forget the multistep history (the forces changed discontinuously: a stage began or ended).
+  virtual void restart() = 0;
+  /// The stepper's history as numbers, for checkpoints, and its restoration.
+  virtual std::vector<double> save() const = 0;
+  virtual void restore(const std::vector<double>& data) = 0;
+  /// Short status for the progress line (mode, step size) and the accepted step count.
+  virtual std::string status() const = 0;
+  virtual long steps() const = 0;
+};
+
+/// Everything needed to continue a run.
+struct Checkpoint {
+  int cycle = 1;              ///< 1-based
+  int stage = 0;              ///< index of the stage in the cycle
+  bool in_stage = false;      ///< false: taken before the stage began
+  double stage_t_begin = 0;
+  State stage_begin;          ///< the state when the stage began (in_stage only)
+  std::string rng_at_stage_begin;
+  bool contact_at_stage_begin = true;
+  Apparatus apparatus;
+  State state;
+  std::vector<double> stepper;
+  double next_frame_t = 0;
+};
+
+class RunSink {
+ public:
+  virtual ~RunSink() = default;
+  virtual void frame(const State& s, const std::string& stage, int cycle) = 0;
+  /// End of cycle `cycle` (after its last stage): the plastic field and geometry to keep.
+  virtual void cycle_end(int cycle, const State& s) = 0;
+  /// Persist everything so far together with the checkpoint (atomically).
+  virtual void checkpoint(const Checkpoint& c) = 0;
+};
+
+struct RunnerSettings {
+  int cycles = 1;
+  double t_max = 1e30;            ///< cap on the simulated time of the whole run
+  double frame_dt = 0.01;         ///< simulated time between frames
+  double checkpoint_wall_s = 300; ///< wall seconds between checkpoints inside a stage
+  double progress_wall_s = 2;     ///< wall seconds between progress lines
+  bool quiet = false;
+  std::uint64_t seed = 1;
+};
+
+class ProtocolRunner {
+ public:
+  /// make(k): the k-th stage of a cycle, freshly built.
+  using StageFactory = std::function<std::unique_ptr<Stage>(int index)>;
+
+  ProtocolRunner(SheetModel& model, Stepper& stepper, StageFactory make, int num_stages,
+                 SheetInfo sheet, RunnerSettings settings);
+
+  /// Self-contact switches used by stages (unfold); default: no contact.
+  void set_contact_switch(std::function<void(bool)> set, std::function<bool()> get);
+
+  /// Runs the protocol from the start or from a checkpoint. Returns false if it stopped at
+  /// t_max before the last cycle ended. Throws NumericalFailure (after a checkpoint) with the
+  /// stage, cycle and time in the message.
+  bool run(State& s, RunSink& sink, const Checkpoint* resume = nullptr);
+
+ private:
+  void progress(const Stage& stage, const StageContext& ctx, int k, bool force);
+  Checkpoint make_checkpoint(const StageContext& ctx, int cycle, int stage, bool in_stage,
+                             const State& stage_begin, const std::string& rng_begin,
+                             bool contact_begin) const;
+
+  SheetModel& model_;
+  Stepper& stepper_;
+  StageFactory make_;
+  int num_stages_;
+  SheetInfo sheet_;
+  RunnerSettings cfg_;
+  std::function<void(bool)> set_contact_ = [](bool) {};
+  std::function<bool()> contact_on_ = [] { return false; };
+  double next_frame_ = 0;
+  std::chrono::steady_clock::time_point start_, last_progress_, stage_wall_start_;
+};
+
+/// mt19937_64 state as text and back (checkpoints).
+std::string rng_state(const std::mt19937_64& rng);
+void set_rng_state(std::mt19937_64& rng, const std::string& text);
+
+}  // namespace crumple
