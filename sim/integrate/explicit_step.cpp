@@ -1,0 +1,83 @@
+// One attempt of the explicit RK4(3) step over (x, v, p) (integrator.hpp; paper §3.4):
+// x' = v, v' = F / m, p' = g(c(x), p).
+#include "sim/integrate/error_norm.hpp"
+#include "sim/integrate/integrator.hpp"
+#include "sim/integrate/rk43.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+
+namespace crumple {
+
+double Integrator::plastic_rate_at(const VecX& x, const VecX& p, VecX& g) const {
+  g.setZero(p.size());
+  if (!law_.enabled) return 0.0;
+  VecX c;
+  model_.bending().curvatures(x, c);
+  double gmax = 0;
+  for (Index h = 0; h < static_cast<Index>(p.size()); ++h) {
+    g[h] = law_.g(c[h], p[h]);
+    gmax = std::max(gmax, std::abs(g[h]));
+  }
+  return gmax;
+}
+
+void Integrator::explicit_rhs(double t, const VecX& y, VecX& dy, State& sc) {
+  const Index n3 = model_.num_dofs(), nh = model_.num_hinges();
+  const double t0 = omp_get_wtime();
+  sc.t = t;
+  sc.x = y.head(n3);
+  sc.v = y.segment(n3, n3);
+  sc.p = y.tail(nh);
+  VecX F, g;
+  model_.forces(sc, F);
+  plastic_rate_at(sc.x, sc.p, g);
+  dy.resize(y.size());
+  dy.head(n3) = sc.v;
+  dy.segment(n3, n3) = F / model_.params().mass;
+  dy.tail(nh) = g;
+  hist_.counters.wall_assembly += omp_get_wtime() - t0;
+}
+
+void Integrator::explicit_attempt(const State& s, double h, Attempt& a) {
+  const Index n3 = model_.num_dofs(), nh = model_.num_hinges();
+  a.order = 4;
+  VecX y(2 * n3 + nh);
+  y << s.x, s.v, s.p;
+  State scratch;
+  auto f = [&](double t, const VecX& yy, VecX& dy) { explicit_rhs(t, yy, dy, scratch); };
+  VecX k1;
+  if (hist_.fsal.size() == y.size())
+    k1 = hist_.fsal;
+  else
+    f(s.t, y, k1);
+  VecX y4, y3, k5;
+  rk43_step(f, s.t, y, h, k1, y4, y3, k5);
+
+  // Worst node by acceleration at the end of the step (also the switching criterion).
+  double amax = -1;
+  for (Index i = 0; i < n3 / 3; ++i) {
+    const double ai = k5.segment<3>(n3 + 3 * i).norm();
+    if (!(ai <= amax)) {
+      amax = ai;
+      a.worst_node = i;
+    }
+    if (std::isnan(ai)) break;
+  }
+  if (!y4.allFinite() || !k5.allFinite()) {
+    a.failure = "non-finite state in the explicit step";
+    return;
+  }
+  a.ok = true;
+  a.err = std::sqrt(weighted_sq_sum(y4 - y3, y4, settings_.atol, settings_.explicit_rtol) /
+                    static_cast<double>(y.size()));
+  a.a_ratio = amax / a_ref_;
+  a.next.t = s.t + h;
+  a.next.x = y4.head(n3);
+  a.next.v = y4.segment(n3, n3);
+  a.next.p = y4.tail(nh);
+  a.fsal = std::move(k5);
+}
+
+}  // namespace crumple

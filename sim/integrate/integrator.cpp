@@ -1,0 +1,175 @@
+// The hybrid driver: step loop, step-size control, rejection and retry, mode switching and the
+// step log (integrator.hpp; paper §3.2-3.4).
+#include "sim/integrate/integrator.hpp"
+
+#include "sim/core/errors.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+namespace crumple {
+
+Integrator::Integrator(SheetModel& model, const IntegratorSettings& settings)
+    : model_(model),
+      settings_(settings),
+      law_{settings.plastic_c0, settings.plastic_gamma, settings.plastic_rate, settings.plasticity},
+      solver_(settings.linear_solver, settings.block_size, settings.cg_tol, settings.cg_max_iters) {
+  validate(settings_);
+  model_.rebuild_pattern();
+  newton_ = std::make_unique<ReducedNewton>(model_, law_);
+  const double lambda = std::sqrt(model_.num_nodes() / model_.mesh().total_area());
+  a_ref_ = model_.params().ks / (model_.params().mass * lambda);
+  hist_.h = settings_.h_init;
+  hist_.mode = settings_.mode_initial;
+}
+
+Integrator::~Integrator() = default;
+
+void Integrator::reset_history(const State& s) {
+  hist_.times.assign(1, s.t);
+  hist_.xs.assign(1, s.x);
+  hist_.vs.assign(1, s.v);
+  hist_.ps.assign(1, s.p);
+  hist_.fsal.resize(0);
+}
+
+void Integrator::sync_history(const State& s) {
+  const bool same = !hist_.times.empty() && hist_.times[0] == s.t && hist_.xs[0] == s.x &&
+                    hist_.vs[0] == s.v && hist_.ps[0] == s.p;
+  if (!same) reset_history(s);
+}
+
+void Integrator::push_history(const State& s) {
+  // Keep bdf_order + 1 points: the corrector of order s needs s, its predictor s + 1.
+  const std::size_t keep =
+      hist_.mode == IntegrationMode::Implicit ? static_cast<std::size_t>(settings_.bdf_order) + 1 : 1;
+  hist_.times.insert(hist_.times.begin(), s.t);
+  hist_.xs.insert(hist_.xs.begin(), s.x);
+  hist_.vs.insert(hist_.vs.begin(), s.v);
+  hist_.ps.insert(hist_.ps.begin(), s.p);
+  if (hist_.times.size() > keep) {
+    hist_.times.resize(keep);
+    hist_.xs.resize(keep);
+    hist_.vs.resize(keep);
+    hist_.ps.resize(keep);
+  }
+}
+
+void Integrator::after_accept(const State& s, const Attempt& a, double h, int rejections) {
+  auto& C = hist_.counters;
+  const bool implicit = hist_.mode == IntegrationMode::Implicit;
+  (implicit ? C.steps_implicit : C.steps_explicit) += 1;
+  ++hist_.steps_in_mode;
+
+  LogRow row;
+  row.t = s.t;
+  row.h = h;
+  row.mode = implicit ? 0 : 1;
+  row.order = a.order;
+  row.newton_iters = a.newton_iters;
+  row.cg_iters = a.cg_iters;
+  row.a_ratio = a.a_ratio;
+  row.rejections = rejections;
+  const Energies en = model_.energies(s);
+  row.e_stretch = en.stretch;
+  row.e_bend = en.bend;
+  row.e_contact = en.contact;
+  row.e_external = en.external;
+  row.e_kinetic = en.kinetic;
+  log_.push_back(row);
+
+  // Moving average of a_max / a_ref and the switch (Fig. 6a).
+  auto& w = hist_.a_window;
+  w.push_back(a.a_ratio);
+  if (static_cast<int>(w.size()) > settings_.switch_window) w.erase(w.begin());
+  const double avg = std::accumulate(w.begin(), w.end(), 0.0) / static_cast<double>(w.size());
+  if (hist_.steps_in_mode < settings_.switch_min_steps) return;
+  if (implicit && avg > settings_.switch_up) {
+    hist_.mode = IntegrationMode::Explicit;
+    // Start the explicit steps well inside RK4's stability region for the in-plane springs
+    // (period 2 pi sqrt(m / ks)); the controller takes over from there.
+    const double t_spring = std::sqrt(model_.params().mass / model_.params().ks);
+    hist_.h = std::min(hist_.h, 0.2 * t_spring);
+  } else if (!implicit && avg < settings_.switch_down) {
+    hist_.mode = IntegrationMode::Implicit;
+  } else {
+    return;
+  }
+  ++C.switches;
+  hist_.steps_in_mode = 0;
+  reset_history(s);  // the BDF order climbs again from 1; the FSAL stage is dropped
+}
+
+void Integrator::advance_to(State& s, double t_end) {
+  const double wall0 = omp_get_wtime();
+  sync_history(s);
+  const double t_eps = 1e-13 * std::max(1.0, std::abs(t_end));
+  while (t_end - s.t > t_eps) {
+    int rejections = 0;
+    Attempt a;
+    double h = 0;
+    for (;;) {
+      if (before_step) {
+        before_step(s);
+        hist_.fsal.resize(0);  // the callback may change the force terms
+      }
+      if (model_.rebuild_pattern()) newton_->bind();
+      const bool implicit = hist_.mode == IntegrationMode::Implicit;
+      h = std::min(hist_.h, t_end - s.t);
+      // Avoid a sliver of a last step: split the remainder in two instead.
+      if (t_end - s.t > h && t_end - s.t < 1.5 * h) h = 0.5 * (t_end - s.t);
+      a = Attempt{};
+      if (implicit) {
+        ++hist_.counters.implicit_attempts;
+        implicit_attempt(s, h, a);
+      } else {
+        explicit_attempt(s, h, a);
+      }
+      const double exponent = implicit ? 1.0 / (a.order + 1) : 0.25;
+      if (a.ok && a.err <= 1.0) {
+        const double fac = a.err > 0 ? 0.9 * std::pow(a.err, -exponent) : settings_.max_growth;
+        hist_.h = std::clamp(h * std::min(fac, settings_.max_growth), settings_.h_min,
+                             settings_.h_max);
+        break;
+      }
+      ++rejections;
+      auto& C = hist_.counters;
+      double hn;
+      std::string reason;
+      if (a.ok) {
+        ++C.rejected_error;
+        hn = h * std::clamp(0.9 * std::pow(a.err, -exponent), 0.1, 0.9);
+        reason = "local error test failed repeatedly";
+      } else {
+        if (a.not_spd)
+          ++C.rejected_not_spd;
+        else if (a.newton_failed)
+          ++C.rejected_newton;
+        else
+          ++C.rejected_other;
+        hn = h / 4.0;
+        reason = a.failure;
+      }
+      if (h <= settings_.h_min * (1 + 1e-12) || hn < settings_.h_min) {
+        std::ostringstream msg;
+        msg << "integration failed at t = " << s.t << " with h = " << h << " (h_min "
+            << settings_.h_min << ", " << (implicit ? "implicit" : "explicit")
+            << " mode): " << reason << "; largest residual force at node " << a.worst_node;
+        hist_.counters.wall_total += omp_get_wtime() - wall0;
+        throw NumericalFailure(msg.str());
+      }
+      hist_.h = hn;
+    }
+    s = std::move(a.next);
+    if (hist_.mode == IntegrationMode::Explicit) hist_.fsal = std::move(a.fsal);
+    push_history(s);
+    after_accept(s, a, h, rejections);
+  }
+  hist_.counters.wall_total += omp_get_wtime() - wall0;
+}
+
+}  // namespace crumple

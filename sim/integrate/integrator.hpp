@@ -1,0 +1,105 @@
+// The hybrid time integrator (paper §3.2-3.4): quasistatic variable-step BDF with the reduced
+// Newton solve while the sheet moves slowly, explicit adaptive RK4(3) through fast events, and
+// the switch between them.
+//
+// Quasistatic mode (eq. 22-35): x' = v, 0 = F(x, v, p), p' = g(c(x), p). Each step: Lagrange
+// predictor of (x, v, p) through the last points, Newton on the BDF residuals with one SPD
+// solve per iteration (reduced_newton.hpp, linear_solver.hpp), local error from corrector minus
+// predictor (bdf.hpp), step size control. The order climbs from 1 to bdf_order as accepted
+// points accumulate (after the start, a restart or a switch). The error test uses x and p (the
+// differential unknowns); v is algebraic.
+// Dynamic mode: m v' = F, x' = v, p' = g with RK4 and its embedded third-order estimate
+// (rk43.hpp), error weighted over (x, v, p).
+// Switching (§3.4, Fig. 6a): a_max = max over nodes of max(|F_i| / m, |v_i(t+h) - v_i(t)| / h)
+// (residual and realised acceleration) in quasistatic mode and |F_i| / m in dynamic mode;
+// a_ref = ks / (m lambda), lambda = sqrt(n / A). The mean of a_max/a_ref over the last
+// switch_window accepted steps above switch_up switches to dynamic, below switch_down back to
+// quasistatic, each only after switch_min_steps steps in the current mode.
+// Failures (matrix not SPD, Newton not converging, non-finite values) reject the step and retry
+// with h / 4; an error-test failure shrinks h by the controller. Below h_min a NumericalFailure
+// is thrown with the time, h, the reason and the node with the largest residual force.
+#pragma once
+
+#include "sim/integrate/linear_solver.hpp"
+#include "sim/integrate/plasticity.hpp"
+#include "sim/integrate/reduced_newton.hpp"
+#include "sim/integrate/settings.hpp"
+#include "sim/integrate/step_log.hpp"
+#include "sim/model/sheet_model.hpp"
+
+#include <functional>
+#include <memory>
+
+namespace crumple {
+
+/// Everything the integrator carries from step to step, so a checkpoint can store it and a
+/// resumed run continues exactly as the uninterrupted one (bit for bit with one thread).
+struct IntegratorHistory {
+  std::vector<double> times;   ///< accepted times, newest first (times[0] = state's t)
+  std::vector<VecX> xs, vs, ps;  ///< the matching x, v, p
+  double h = 0;                ///< next step size to try
+  IntegrationMode mode = IntegrationMode::Implicit;
+  int steps_in_mode = 0;
+  std::vector<double> a_window;  ///< last a_max/a_ref values, oldest first
+  VecX fsal;                   ///< explicit mode: derivative at the newest point (empty if none)
+  IntegratorSummary counters;
+};
+
+class Integrator {
+ public:
+  Integrator(SheetModel& model, const IntegratorSettings& settings);
+  ~Integrator();
+
+  /// Integrates s from s.t to t_end (the last step lands exactly on t_end). If s differs from
+  /// the newest history point (first call, or the caller changed the state), the multistep
+  /// history restarts from s. Throws NumericalFailure.
+  void advance_to(State& s, double t_end);
+
+  const std::vector<LogRow>& log() const { return log_; }
+  void clear_log() { log_.clear(); }
+  IntegratorSummary summary() const { return hist_.counters; }
+
+  const IntegratorHistory& history() const { return hist_; }
+  void restore(const IntegratorHistory& h) { hist_ = h; }
+
+  IntegrationMode mode() const { return hist_.mode; }
+  double a_ref() const { return a_ref_; }
+  const IntegratorSettings& settings() const { return settings_; }
+
+  /// Called before every step attempt with the current state (stages, contact updates).
+  std::function<void(const State&)> before_step;
+
+ private:
+  struct Attempt {
+    bool ok = false;          ///< solved (error test still to do)
+    double err = 0;           ///< weighted RMS local error estimate
+    int order = 1;
+    int newton_iters = 0, cg_iters = 0;
+    double a_ratio = 0;
+    std::string failure;      ///< reason when !ok
+    bool not_spd = false, newton_failed = false;
+    Index worst_node = -1;    ///< largest residual force
+    State next;
+    VecX fsal;
+  };
+
+  void sync_history(const State& s);
+  void reset_history(const State& s);
+  void push_history(const State& s);
+  void implicit_attempt(const State& s, double h, Attempt& a);
+  void explicit_attempt(const State& s, double h, Attempt& a);
+  void explicit_rhs(double t, const VecX& y, VecX& dy, State& scratch);
+  double plastic_rate_at(const VecX& x, const VecX& p, VecX& g) const;
+  void after_accept(const State& s, const Attempt& a, double h, int rejections);
+
+  SheetModel& model_;
+  IntegratorSettings settings_;
+  PlasticLaw law_;
+  std::unique_ptr<ReducedNewton> newton_;
+  LinearSolver solver_;
+  double a_ref_ = 1;
+  IntegratorHistory hist_;
+  std::vector<LogRow> log_;
+};
+
+}  // namespace crumple

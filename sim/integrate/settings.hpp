@@ -1,0 +1,56 @@
+// Every knob of the hybrid integrator (paper §3.2-3.4) in one struct with its default.
+//
+// The YAML side is crumple::IntegratorParams (sim/io/params.hpp, keys of the same names); the
+// application maps it into this struct. Tolerances weight each component i by
+// atol + rtol |y_i| (positions in length units, p dimensionless; the explicit mode also
+// weights velocities this way, with explicit_rtol).
+#pragma once
+
+#include <string>
+
+namespace crumple {
+
+enum class IntegrationMode { Implicit = 0, Explicit = 1 };
+
+enum class LinearSolverKind {
+  BlockJacobiCG,         ///< "block_jacobi": CG + dense Cholesky of diagonal blocks (paper §3.3)
+  PlainCG,               ///< "cg": CG without preconditioner
+  IncompleteCholeskyCG,  ///< "incomplete_cholesky": CG + Eigen::IncompleteCholesky
+  DirectLDLT,            ///< "ldlt": Eigen::SimplicialLDLT (direct, for comparison)
+};
+
+struct IntegratorSettings {
+  IntegrationMode mode_initial = IntegrationMode::Implicit;
+  int bdf_order = 4;         ///< highest BDF order (1..4); start-up climbs from 1
+  double rtol = 1e-4;        ///< implicit (BDF) relative tolerance
+  double atol = 1e-6;        ///< absolute tolerance (length units for x, also used for p, v)
+  double h_init = 1e-4;      ///< first step, s
+  double h_min = 1e-12;      ///< below this a failing step throws NumericalFailure, s
+  double h_max = 1e-1;       ///< s
+  double max_growth = 2.0;   ///< largest ratio of consecutive steps
+  double newton_tol = 0.1;   ///< converged when the weighted RMS of (dx, dp) <= newton_tol
+  int newton_max_iters = 8;
+  LinearSolverKind linear_solver = LinearSolverKind::BlockJacobiCG;
+  int block_size = 18;       ///< scalar rows per block-Jacobi block (18 = 6 nodes)
+  double cg_tol = 1e-8;      ///< relative residual |r| / |b|
+  int cg_max_iters = 2000;
+  double switch_up = 1e-3;   ///< <a_max/a_ref> above this: implicit -> explicit
+  double switch_down = 1e-6; ///< <a_max/a_ref> below this: explicit -> implicit
+  int switch_window = 10;    ///< accepted steps in the moving average
+  int switch_min_steps = 20; ///< accepted steps in a mode before it may switch again
+  double explicit_rtol = 1e-6;  ///< RK4(3) relative tolerance
+  bool plasticity = true;
+  double plastic_c0 = 0.1;      ///< yield curvature (19)
+  double plastic_gamma = 0.0;   ///< damage-rate constant (19)
+  double plastic_rate = 1.0;    ///< 1/s, time scale of the flow (plasticity.hpp)
+};
+
+/// "implicit" / "explicit"; throws InputError listing the valid names otherwise.
+IntegrationMode parse_integration_mode(const std::string& name);
+/// "block_jacobi", "cg", "incomplete_cholesky", "ldlt"; throws InputError otherwise.
+LinearSolverKind parse_linear_solver(const std::string& name);
+std::string to_string(LinearSolverKind kind);
+/// Throws InputError if a value is out of range (orders, tolerances, sizes).
+void validate(const IntegratorSettings& s);
+
+}  // namespace crumple

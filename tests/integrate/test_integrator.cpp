@@ -1,0 +1,257 @@
+// The hybrid integrator on small sheets (sim/integrate/integrator.hpp): energy conservation of
+// undamped explicit dynamics, monotone quasistatic relaxation, plastic flow with yield and
+// memory, implicit -> explicit -> implicit switching, rejection of non-SPD steps, the
+// NumericalFailure path, and bit-for-bit resume from a stored history.
+#include "sim/core/errors.hpp"
+#include "sim/integrate/integrator.hpp"
+#include "tests/integrate/anchor_term.hpp"
+#include "tests/support/grid_mesh.hpp"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+using namespace crumple;
+using crumple::testing::AnchorTerm;
+
+namespace {
+
+const Mesh& sheet() {
+  static const Mesh m = crumple::testing::grid_mesh(6, 6, 1.0, 1.0, 0.15, 2);
+  return m;
+}
+
+ModelParams params(double b_iso) {
+  ModelParams mp;
+  mp.ks = 10;
+  mp.kb = 0.01;
+  mp.mass = 1;
+  mp.b_iso = b_iso;
+  return mp;
+}
+
+State stretched(const SheetModel& model, double factor) {
+  State s = model.rest_state();
+  s.x *= factor;
+  return s;
+}
+
+IntegratorSettings no_switching(IntegrationMode mode) {
+  IntegratorSettings st;
+  st.mode_initial = mode;
+  st.switch_min_steps = 1 << 30;
+  return st;
+}
+
+}  // namespace
+
+TEST(Integrator, UndampedExplicitDynamicsConservesEnergy) {
+  SheetModel model(sheet(), params(0.0));
+  auto st = no_switching(IntegrationMode::Explicit);
+  st.atol = 1e-9;
+  st.explicit_rtol = 1e-7;
+  st.h_max = 1.0;
+  st.plasticity = false;  // plastic flow dissipates bending energy; this test is about RK4
+  Integrator integ(model, st);
+  State s = model.rest_state();
+  std::mt19937_64 rng(4);
+  std::normal_distribution<double> N(0, 1);
+  for (Index k = 0; k < s.x.size(); ++k) s.x[k] += 0.02 * N(rng);
+  const double e0 = model.energies(s).total();
+  while (integ.log().size() < 1000) integ.advance_to(s, s.t + 1.0);
+  const double e1 = model.energies(s).total();
+  const double drift = std::abs(e1 - e0) / e0 * 1000.0 / integ.log().size();
+  std::printf("explicit: %zu steps to t = %.1f, relative energy drift %.2e per 1000 steps\n",
+              integ.log().size(), s.t, drift);
+  EXPECT_LT(drift, 1e-5);
+  EXPECT_GT(model.energies(s).kinetic, 1e-3 * e0);  // it really moved
+}
+
+TEST(Integrator, QuasistaticRelaxationDecreasesEnergyToRest) {
+  SheetModel model(sheet(), params(1.0));
+  Integrator integ(model, no_switching(IntegrationMode::Implicit));
+  State s = stretched(model, 1.05);
+  // Bend it a little too, so bending relaxes as well.
+  for (Index i = 0; i < model.num_nodes(); ++i) s.x[3 * i + 2] = 0.05 * std::sin(3 * s.x[3 * i]);
+  const double e0 = model.energies(s).potential();
+  integ.advance_to(s, 100.0);
+  double prev = e0;
+  for (const auto& r : integ.log()) {
+    const double e = r.e_stretch + r.e_bend;
+    EXPECT_LE(e, prev * (1 + 1e-9) + 1e-14) << "t = " << r.t;
+    prev = e;
+  }
+  const auto sum = integ.summary();
+  std::printf("quasistatic relaxation: %ld steps, E %.3e -> %.3e, %s", sum.steps_implicit, e0,
+              prev, sum.text().c_str());
+  EXPECT_LT(prev, 1e-4 * e0);
+  EXPECT_LT(s.v.lpNorm<Eigen::Infinity>(), 1e-4);
+  EXPECT_LT(sum.mean_newton_per_step(), 4.0);
+  int max_order = 0;
+  for (const auto& r : integ.log()) max_order = std::max(max_order, r.order);
+  EXPECT_EQ(max_order, 4);
+}
+
+namespace {
+
+// A single hinge: x0 = (0,0,0), x1 = (1,0,0), x2 above the edge, x3 below, folded by phi.
+Mesh one_hinge() {
+  Eigen::Matrix3Xd ref(3, 4);
+  ref << 0, 1, 0.5, 0.5, 0, 0, 0.8, -0.8, 0, 0, 0, 0;
+  return build_mesh(ref, {{0, 1, 2}, {1, 0, 3}});
+}
+
+VecX folded(const Mesh& m, double phi) {
+  VecX x = m.ref_flat();
+  x.segment<3>(9) = Vec3(0.5, -0.8 * std::cos(phi), 0.8 * std::sin(phi));
+  return x;
+}
+
+}  // namespace
+
+TEST(Integrator, PlasticFlowHasAYieldPointAndMemory) {
+  const Mesh m = one_hinge();
+  ModelParams mp = params(1.0);
+  mp.kb = 0.05;
+  SheetModel model(m, mp);
+  auto st = no_switching(IntegrationMode::Implicit);
+  st.plastic_c0 = 0.2;
+  st.plastic_rate = 5.0;
+  Integrator integ(model, st);
+  State s = model.rest_state();
+  VecX c;
+
+  // Held at c = 0.15 < c0: no flow at all.
+  auto hold = std::make_shared<AnchorTerm>(std::vector<Index>{0, 1, 2, 3},
+                                           folded(m, 2 * std::asin(0.075)), 1e3);
+  model.add_term(hold, TermKind::External);
+  integ.advance_to(s, 5.0);
+  model.bending().curvatures(s.x, c);
+  EXPECT_NEAR(std::abs(c[0]), 0.15, 0.01);
+  EXPECT_EQ(s.p[0], 0.0);
+
+  // Held at c = 0.8: p flows towards c, never beyond the yield band edge.
+  model.remove_term(hold.get());
+  hold = std::make_shared<AnchorTerm>(std::vector<Index>{0, 1, 2, 3},
+                                      folded(m, 2 * std::asin(0.4)), 1e3);
+  model.add_term(hold, TermKind::External);
+  integ.advance_to(s, 20.0);
+  model.bending().curvatures(s.x, c);
+  const double p_loaded = s.p[0];
+  std::printf("loaded: c = %.4f, p = %.4f (c0 = 0.2)\n", c[0], p_loaded);
+  EXPECT_GT(std::abs(p_loaded), 0.3);
+  EXPECT_GT(p_loaded * c[0], 0.0);  // same sign as the fold
+  // The flow slows down (S is flat at the yield point) and stops at the band edge, never
+  // beyond it.
+  EXPECT_LT(std::abs(c[0] - p_loaded), 0.3);
+  EXPECT_GE(std::abs(c[0] - p_loaded), 0.2 - 1e-9);
+
+  // Unloaded: the hinge springs back to its new rest curvature, and p persists.
+  model.remove_term(hold.get());
+  integ.advance_to(s, 60.0);
+  model.bending().curvatures(s.x, c);
+  std::printf("unloaded: c = %.4f, p = %.4f\n", c[0], s.p[0]);
+  EXPECT_NEAR(s.p[0], p_loaded, 1e-3);
+  EXPECT_NEAR(c[0], s.p[0], 1e-3);
+}
+
+namespace {
+
+IntegratorSettings switching_settings() {
+  IntegratorSettings st;
+  st.mode_initial = IntegrationMode::Implicit;
+  st.switch_window = 5;
+  st.switch_min_steps = 5;
+  st.h_max = 1.0;
+  st.plasticity = false;
+  // The way back needs |F| / m below 1e-6 a_ref, i.e. positions accurate far below 1e-6 of a
+  // spacing; a looser atol leaves error noise in the forces above the down-threshold.
+  st.atol = 1e-9;
+  return st;
+}
+
+}  // namespace
+
+TEST(Integrator, ReleasedSheetSwitchesImplicitExplicitImplicit) {
+  // Released from rest, the quasistatic velocities jump (a_max/a_ref large): explicit steps
+  // follow the ringing until the drag has calmed it, then quasistatic steps take over again.
+  SheetModel model(sheet(), params(2.0));
+  Integrator integ(model, switching_settings());
+  State s = stretched(model, 1.05);
+  integ.advance_to(s, 100.0);
+  std::vector<int> modes;
+  for (const auto& r : integ.log())
+    if (modes.empty() || modes.back() != r.mode) modes.push_back(r.mode);
+  const auto sum = integ.summary();
+  std::printf("switching: mode sequence of %zu runs, %ld implicit / %ld explicit steps\n%s",
+              modes.size(), sum.steps_implicit, sum.steps_explicit, sum.text().c_str());
+  ASSERT_GE(modes.size(), 3u);
+  EXPECT_EQ(modes[0], 0);
+  EXPECT_EQ(modes[1], 1);
+  EXPECT_EQ(modes[2], 0);
+  EXPECT_LT(model.energies(s).potential(), 1e-6);
+}
+
+TEST(Integrator, NonSpdMatrixRejectsAndRetriesWithSmallerStep) {
+  SheetModel model(sheet(), params(1.0));
+  // A concave anchor on one node: for large h the Newton matrix Hx + b/(beta h) is indefinite.
+  State s = model.rest_state();
+  VecX target = s.x.segment<3>(0) - Vec3(0.01, 0.01, 0.0);
+  model.add_term(std::make_shared<AnchorTerm>(std::vector<Index>{0}, target, -50.0),
+                 TermKind::External);
+  auto st = no_switching(IntegrationMode::Implicit);
+  st.h_init = 1.0;
+  st.h_max = 1.0;
+  Integrator integ(model, st);
+  integ.advance_to(s, 0.05);
+  const auto sum = integ.summary();
+  std::printf("not SPD: %ld rejections (%ld not SPD)\n", sum.rejections(), sum.rejected_not_spd);
+  EXPECT_GE(sum.rejected_not_spd, 1);
+  EXPECT_DOUBLE_EQ(s.t, 0.05);
+  EXPECT_GE(integ.log().front().rejections, 1);
+
+  // The same with h_min above the SPD limit cannot recover: NumericalFailure names the reason.
+  SheetModel model2(sheet(), params(1.0));
+  model2.add_term(std::make_shared<AnchorTerm>(std::vector<Index>{0}, target, -50.0),
+                  TermKind::External);
+  st.h_min = 0.3;
+  st.h_init = 1.0;
+  Integrator integ2(model2, st);
+  State s2 = model2.rest_state();
+  try {
+    integ2.advance_to(s2, 2.0);
+    FAIL() << "expected NumericalFailure";
+  } catch (const NumericalFailure& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("not SPD"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("t = 0"), std::string::npos) << msg;
+  }
+}
+
+TEST(Integrator, ResumeFromHistoryIsBitForBit) {
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  SheetModel model(sheet(), params(0.5));
+  Integrator a(model, switching_settings());
+  State s = stretched(model, 1.1);
+  a.advance_to(s, 4.0);
+  const IntegratorHistory saved = a.history();
+  const State mid = s;
+  a.advance_to(s, 30.0);
+
+  SheetModel model_b(sheet(), params(0.5));
+  Integrator b(model_b, switching_settings());
+  b.restore(saved);
+  State r = mid;
+  b.advance_to(r, 30.0);
+  omp_set_num_threads(threads);
+  EXPECT_GE(a.summary().switches, 1);
+  EXPECT_EQ(r.t, s.t);
+  EXPECT_TRUE(r.x == s.x);
+  EXPECT_TRUE(r.v == s.v);
+  EXPECT_TRUE(r.p == s.p);
+  EXPECT_EQ(b.summary().steps(), a.summary().steps());
+}
