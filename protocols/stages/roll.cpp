@@ -130,7 +130,7 @@ StageType roll_stage_type() {
       {"angle", K::Number, "0", "axis angle from the x axis in degrees (axis: fixed)"},
       {"duration", K::Number, "0.2", "time to bend from flat to the full roll (s)", 0.0, 1e30,
        true},
-      {"stiffness", K::Number, "0.02", "tether stiffness per node, in units of ks", 0.0, 1e30,
+      {"stiffness", K::Number, "0.1", "tether stiffness per node, in units of ks", 0.0, 1e30,
        true},
       {"tolerance", K::Number, "0.5",
        "done when every node is within this many mean edge lengths of its target", 0.0, 1e30,

@@ -5,8 +5,9 @@
 // position to its flat reference position (centred where the sheet is) over `open_time`;
 // self-contact is off by default in this phase (hands pull layers past each other); (2) press:
 // two plates close onto the plane to a gap of `press_gap` x h_eff while the tethers hold;
-// (3) relax: tethers and plates are removed and the sheet relaxes until quiescent. New plastic
-// flow happens only where flattening bends a hinge beyond the yield band around its p.
+// (3) relax: the tethers let go and the sheet relaxes between the plates until quiescent; the
+// plates are removed when the stage ends. New plastic flow happens only where flattening bends
+// a hinge beyond the yield band around its p.
 #include "protocols/stages/common.hpp"
 #include "protocols/terms/tether_term.hpp"
 #include "protocols/terms/wall_term.hpp"
@@ -75,7 +76,9 @@ class UnfoldStage : public Stage {
       phase_ = 1;
     }
     if (phase_ == 1 && t >= t_relax) {
-      release_terms(ctx);
+      // Relax between the plates: the tethers let go, the plates stay until the end, as for a
+      // sheet held flat to be scanned.
+      ctx.model->remove_term(tethers_.get());
       if (!contact_) ctx.set_contact(true);
       phase_ = 2;
     }
