@@ -1,16 +1,18 @@
-// Meshes for the benchmarks: a jittered regular triangulation with about `nodes` nodes on the
-// unit square (same node degree and hinge count per node as the Lloyd meshes, and cheap to make).
+// Meshes for the benchmarks: the simulator's own Lloyd-regularised, Hilbert-ordered meshes of a
+// unit square with about `nodes` nodes.
 #pragma once
 
-#include "tests/support/grid_mesh.hpp"
-
-#include <cmath>
+#include "sim/mesh/generate.hpp"
 
 namespace crumple {
 
 inline Mesh bench_mesh(int nodes) {
-  const int side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(nodes))));
-  return testing::grid_mesh(side, side, 1.0, 1.0, 0.15, 1);
+  MeshSpec spec;
+  spec.shape = "square";
+  spec.size = 1.0;
+  spec.nodes = nodes;
+  spec.seed = 1;
+  return generate_mesh(spec);
 }
 
 }  // namespace crumple
