@@ -27,8 +27,9 @@ double reference_acceleration(const StageContext& ctx) {
   return ctx.sheet.ks / (ctx.sheet.mass * lambda);
 }
 
-bool quiescent(const StageContext& ctx, double ratio) {
-  return ctx.max_acceleration() < ratio * reference_acceleration(ctx);
+bool quiescent(const StageContext& ctx, double ratio, double speed) {
+  return ctx.max_speed() < speed * ctx.sheet.size &&
+         ctx.max_acceleration() < ratio * reference_acceleration(ctx);
 }
 
 Vec3 reference_centroid(const Mesh& mesh) { return mesh.ref.rowwise().mean(); }

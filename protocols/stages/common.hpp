@@ -12,7 +12,9 @@ void apply_common(Stage& stage, const StageArgs& args);
 
 /// Quiescence as in the integrator's switching test: max|F_i|/m below `ratio` times
 /// a_ref = ks/(m lambda), lambda = sqrt(n/A) the linear node density (paper §3.4).
-bool quiescent(const StageContext& ctx, double ratio);
+/// Overdamped creep has tiny accelerations at finite speed, so quiescence also asks every node
+/// to move slower than `speed` sheet sizes per second.
+bool quiescent(const StageContext& ctx, double ratio, double speed);
 double reference_acceleration(const StageContext& ctx);
 
 /// Centroid of the reference positions.

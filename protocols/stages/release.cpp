@@ -1,6 +1,7 @@
 // Stage `release`: with the walls gone, let the sheet relax until it is quiescent: the largest
 // node acceleration max|F_i|/m falls below `threshold` x a_ref, a_ref = ks/(m lambda) the
-// reference acceleration of the integrator's switching test (paper §3.4).
+// reference acceleration of the integrator's switching test (paper §3.4), and the fastest node
+// moves slower than `speed` sheet sizes per second (an overdamped creep has tiny accelerations).
 #include "protocols/stages/common.hpp"
 
 #include <sstream>
@@ -11,7 +12,8 @@ namespace {
 class ReleaseStage : public Stage {
  public:
   explicit ReleaseStage(const StageArgs& a)
-      : threshold_(a.number("threshold")), min_duration_(a.number("min_duration")) {
+      : threshold_(a.number("threshold")), speed_(a.number("speed")),
+        min_duration_(a.number("min_duration")) {
     apply_common(*this, a);
   }
   std::string type() const override { return "release"; }
@@ -19,16 +21,19 @@ class ReleaseStage : public Stage {
   bool done(StageContext& ctx) override {
     if (ctx.state->t < t0_ + min_duration_) return false;
     last_ratio_ = ctx.max_acceleration() / reference_acceleration(ctx);
-    return last_ratio_ < threshold_;
+    last_speed_ = ctx.max_speed() / ctx.sheet.size;
+    return last_ratio_ < threshold_ && last_speed_ < speed_;
   }
   std::string progress(const StageContext&) const override {
     std::ostringstream os;
-    os << "a_max/a_ref " << last_ratio_ << " -> " << threshold_;
+    os << "a_max/a_ref " << last_ratio_ << " -> " << threshold_ << ", speed " << last_speed_
+       << " -> " << speed_ << " sizes/s";
     return os.str();
   }
 
  private:
-  double threshold_, min_duration_, t0_ = 0, last_ratio_ = 1.0 / 0.0;
+  double threshold_, speed_, min_duration_, t0_ = 0, last_ratio_ = 1.0 / 0.0,
+      last_speed_ = 1.0 / 0.0;
 };
 
 }  // namespace
@@ -41,6 +46,8 @@ StageType release_stage_type() {
   t.params = {
       {"threshold", K::Number, "1e-6", "quiescent when max|F|/m < threshold x ks/(m lambda)", 0.0,
        1e30, true},
+      {"speed", K::Number, "1e-3", "quiescent when every node is slower than this (sizes/s)",
+       0.0, 1e30, true},
       {"min_duration", K::Number, "0.02", "relax at least this long (s)", 0.0},
   };
   for (auto& p : common_params(2.0, 0.01)) t.params.push_back(p);

@@ -25,7 +25,8 @@ class UnfoldStage : public Stage {
         press_gap_(a.number("press_gap")),
         stiffness_(a.number("stiffness")),
         contact_(a.flag("contact")),
-        threshold_(a.number("threshold")) {
+        threshold_(a.number("threshold")),
+        speed_(a.number("speed")) {
     apply_common(*this, a);
   }
   std::string type() const override { return "unfold"; }
@@ -84,7 +85,7 @@ class UnfoldStage : public Stage {
     }
     if (phase_ == 2 && t >= t_relax + 0.1 * open_time_) {
       last_ratio_ = ctx.max_acceleration() / reference_acceleration(ctx);
-      return last_ratio_ < threshold_;
+      return last_ratio_ < threshold_ && ctx.max_speed() < speed_ * ctx.sheet.size;
     }
     return false;
   }
@@ -105,7 +106,7 @@ class UnfoldStage : public Stage {
  private:
   double open_time_, press_time_, press_gap_, stiffness_;
   bool contact_;
-  double threshold_;
+  double threshold_, speed_;
   double t0_ = 0, last_ratio_ = 1.0 / 0.0;
   int phase_ = 0;
   Eigen::Matrix3Xd start_, flat_;
@@ -129,6 +130,7 @@ StageType unfold_stage_type() {
       {"contact", K::Flag, "false", "keep self-contact on while opening"},
       {"threshold", K::Number, "1e-6", "quiescence threshold of the final relaxation", 0.0, 1e30,
        true},
+      {"speed", K::Number, "1e-3", "... and largest node speed (sheet sizes/s)", 0.0, 1e30, true},
   };
   for (auto& p : common_params(10.0, 0.01)) t.params.push_back(p);
   t.make = [](const StageArgs& a) { return std::make_unique<UnfoldStage>(a); };

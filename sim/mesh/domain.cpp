@@ -48,7 +48,12 @@ Domain Domain::square(double side, int per_side) {
     // Corners exactly, and no rounding drift along a side: interpolate from both ends.
     for (int k = 0; k < per_side; ++k) {
       const double t = static_cast<double>(k) / per_side;
-      nodes.push_back(k == 0 ? a : Point2((1.0 - t) * a + t * b));
+      Point2 q = k == 0 ? a : Point2((1.0 - t) * a + t * b);
+      // (1-t) a + t b does not return a coordinate that a and b share exactly (h = 0.05, say):
+      // copy it, so the nodes of a side are exactly collinear and form the Delaunay hull.
+      for (int d = 0; d < 2; ++d)
+        if (a[d] == b[d]) q[d] = a[d];
+      nodes.push_back(q);
     }
   }
   return Domain(corners, nodes);

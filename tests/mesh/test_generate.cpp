@@ -219,3 +219,17 @@ TEST(GenerateMesh, RejectsBadSpecs) {
 
 }  // namespace
 }  // namespace crumple
+
+TEST(GenerateMesh, PhysicalSizesWithInexactHalfSides) {
+  // Half sides such as 0.05 m are not binary fractions: the border nodes must still be exactly
+  // collinear, or the Delaunay hull departs from the border polygon.
+  for (const char* shape : {"square", "disk"})
+    for (double size : {0.1, 0.37, 0.3}) {
+      crumple::MeshSpec spec;
+      spec.shape = shape;
+      spec.size = size;
+      spec.nodes = 400;
+      spec.seed = 2;
+      EXPECT_NO_THROW(crumple::generate_mesh(spec)) << shape << " of size " << size;
+    }
+}
