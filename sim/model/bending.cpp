@@ -42,9 +42,9 @@ double BendingTerm::energy(const State& s) const {
   for (Index h = 0; h < nh; ++h) {
     const auto& hg = mesh_->hinges[h];
     const auto& nd = hg.nodes;
-    const double th =
-        bend_angle(node(s.x, nd[0]), node(s.x, nd[1]), node(s.x, nd[2]), node(s.x, nd[3]));
-    const double d = 2.0 * std::sin(0.5 * th) - s.p[h];
+    const double d =
+        hinge_curvature(node(s.x, nd[0]), node(s.x, nd[1]), node(s.x, nd[2]), node(s.x, nd[3])) -
+        s.p[h];
     e += 0.5 * kb_ * hg.rest_factor * d * d;
   }
   return e;
@@ -168,8 +168,7 @@ void BendingTerm::curvatures(const VecX& x, VecX& c) const {
 #pragma omp parallel for schedule(static)
   for (Index h = 0; h < nh; ++h) {
     const auto& nd = mesh_->hinges[h].nodes;
-    c[h] = 2.0 * std::sin(0.5 * bend_angle(node(x, nd[0]), node(x, nd[1]), node(x, nd[2]),
-                                           node(x, nd[3])));
+    c[h] = hinge_curvature(node(x, nd[0]), node(x, nd[1]), node(x, nd[2]), node(x, nd[3]));
   }
 }
 

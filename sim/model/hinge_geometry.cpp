@@ -26,10 +26,10 @@ void half_hinge(const Vec3& p, const Vec3& q, const Vec3& r, HalfHinge& o, bool 
   o.s[0] = (1.0 - tau) / h;
   o.s[1] = tau / h;
   o.s[2] = -1.0 / h;
+  if (!with_second) return;
   o.dn[0] = o.n.cross(q - r) / a2;
   o.dn[1] = o.n.cross(r - p) / a2;
   o.dn[2] = o.n.cross(p - q) / a2;
-  if (!with_second) return;
 
   const Vec3 eh = e / l;
   const Vec3 m = o.n.cross(eh);
@@ -44,6 +44,14 @@ void half_hinge(const Vec3& p, const Vec3& q, const Vec3& r, HalfHinge& o, bool 
   o.ds[2][0] = -(u * ih2) * m;
   o.ds[2][1] = -(tau * ih2) * m;
   o.ds[2][2] = ih2 * m;
+}
+
+double hinge_curvature(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3) {
+  const Vec3 e0 = x1 - x0;
+  const Vec3 n1 = e0.cross(x2 - x0).normalized();
+  const Vec3 n2 = (x3 - x0).cross(e0).normalized();
+  const double c = (n1 - n2).norm();
+  return n1.cross(n2).dot(e0) < 0 ? -c : c;
 }
 
 double bend_angle(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3) {

@@ -31,8 +31,12 @@ struct HalfHinge {
 };
 
 /// Computes the half-hinge data of triangle (p, q, r) with hinge edge p -> q.
-/// If with_second is false, ds is left uninitialised.
+/// If with_second is false, dn and ds (needed only for the Hessian) are left uninitialised.
 void half_hinge(const Vec3& p, const Vec3& q, const Vec3& r, HalfHinge& out, bool with_second);
+
+/// Signed curvature c = 2 sin(theta/2) = sign |n1 - n2| of the hinge, without trigonometry
+/// (the quantity the energy and the plastic flow need).
+double hinge_curvature(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3);
 
 /// Signed bend angle of the hinge (x0, x1, x2, x3), in (-pi, pi].
 double bend_angle(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3);

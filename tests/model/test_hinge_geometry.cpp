@@ -107,3 +107,10 @@ TEST(HingeGeometry, GradientKillsRigidMotions) {
     EXPECT_LE((H * t).norm(), 1e-10 * H.norm());
   }
 }
+
+TEST(HingeGeometry, CurvatureWithoutTrigonometryMatchesTheAngle) {
+  for (double th : {-3.0, -1.2, -1e-7, 0.0, 1e-7, 0.4, 2.2, 3.1}) {
+    auto x = folded_hinge(th);
+    EXPECT_NEAR(hinge_curvature(x[0], x[1], x[2], x[3]), 2.0 * std::sin(0.5 * th), 1e-14);
+  }
+}

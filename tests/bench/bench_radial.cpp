@@ -1,0 +1,123 @@
+// Radial confinement benchmark (issue: integrator; paper Fig. 5-6): a 10 cm disk, h_eff
+// 0.125 mm, Y = 1 GPa, an inward force beyond a cutoff radius shrinking at 1 cm/s. The sheet is
+// integrated once to t0; every variant (explicit only, hybrid with each linear solver) then
+// restarts from that same state and is timed over [t0, t0 + dt].
+//   bench_radial [nodes=3000] [t0=1] [dt=1] [threads=2]
+#include "protocols/integrator_stepper.hpp"
+#include "protocols/registry.hpp"
+#include "sim/mesh/generate.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+using namespace crumple;
+
+namespace {
+
+struct Setup {
+  Mesh mesh;
+  ModelParams params;
+  SheetInfo info;
+};
+
+Setup make_setup(int nodes) {
+  Setup s;
+  MeshSpec spec;
+  spec.shape = "disk";
+  spec.size = 0.1;
+  spec.nodes = nodes;
+  spec.seed = 1;
+  s.mesh = generate_mesh(spec);
+  const double h = 1.25e-4, Y = 1e9, rho = 1400, mass_scale = 1e4;
+  const double kappa = Y * h * h * h / (12.0 * (1.0 - 1.0 / 9.0));
+  s.params.ks = std::sqrt(3.0) / 2.0 * Y * h;
+  s.params.kb = 2.0 * kappa / std::sqrt(3.0);
+  s.params.mass = mass_scale * rho * h * s.mesh.total_area() / s.mesh.num_nodes();
+  s.params.b_iso = 0.01 * std::sqrt(s.params.ks * s.params.mass);
+  s.params.b_int = 0.1 * std::sqrt(s.params.ks * s.params.mass);
+  s.info.size = 0.1;
+  s.info.area = s.mesh.total_area();
+  s.info.h_eff = std::sqrt(8 * s.params.kb / s.params.ks);
+  s.info.ks = s.params.ks, s.info.kb = s.params.kb, s.info.mass = s.params.mass;
+  s.info.spacing = s.mesh.mean_edge_length();
+  return s;
+}
+
+IntegratorSettings settings_for(const std::string& solver, int block, bool explicit_only) {
+  IntegratorSettings st;
+  st.plastic_c0 = 0.3;
+  st.linear_solver = parse_linear_solver(solver);
+  st.block_size = block;
+  if (explicit_only) {
+    st.mode_initial = IntegrationMode::Explicit;
+    st.switch_down = 0.0;  // never back to implicit
+  }
+  return st;
+}
+
+// Integrates `s` to t_end under the radial confinement stage (begun at t = 0).
+double integrate(const Setup& su, const IntegratorSettings& st, State& s, double t_end,
+                 IntegratorSummary* out) {
+  SheetModel model(su.mesh, su.params);
+  Integrator integ(model, st);
+  StageContext ctx;
+  ctx.model = &model;
+  State start = model.rest_state();
+  ctx.state = &start;
+  ctx.sheet = su.info;
+  ctx.t_begin = 0.0;
+  const YAML::Node node = YAML::Load("{type: radial_confine, radius: 0.05, speed: 0.01, duration: 5}");
+  auto stage = StageRegistry::builtin().make(node, "bench", "stage");
+  stage->begin(ctx);
+  model.rebuild_pattern();
+  const auto t0 = std::chrono::steady_clock::now();
+  integ.advance_to(s, t_end);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (out) *out = integ.summary();
+  return wall;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int nodes = argc > 1 ? std::atoi(argv[1]) : 3000;
+  const double t0 = argc > 2 ? std::atof(argv[2]) : 1.0;
+  const double dt = argc > 3 ? std::atof(argv[3]) : 1.0;
+  omp_set_num_threads(argc > 4 ? std::atoi(argv[4]) : 2);
+  const Setup su = make_setup(nodes);
+  State s = SheetModel(su.mesh, su.params).rest_state();
+  std::printf("radial confinement, %d nodes, %d threads: reaching t0 = %g s ...\n",
+              su.mesh.num_nodes(), omp_get_max_threads(), t0);
+  const double warm = integrate(su, settings_for("block_jacobi", 18, false), s, t0, nullptr);
+  std::printf("  (%.1f s wall)\n", warm);
+  std::printf("%-34s %10s %8s %8s %10s %10s %8s\n", "variant", "wall [s]", "steps", "expl.", "newton/st",
+              "cg/newton", "rejects");
+  struct Variant {
+    const char* name;
+    const char* solver;
+    int block;
+    bool explicit_only;
+  };
+  for (const Variant& v : {Variant{"explicit only (RK4(3))", "cg", 18, true},
+                           Variant{"hybrid, CG + block Jacobi 18", "block_jacobi", 18, false},
+                           Variant{"hybrid, CG + block Jacobi 144", "block_jacobi", 144, false},
+                           Variant{"hybrid, CG, no preconditioner", "cg", 18, false},
+                           Variant{"hybrid, CG + incomplete Cholesky", "incomplete_cholesky", 18, false},
+                           Variant{"hybrid, direct LDLT", "ldlt", 18, false}}) {
+    State w = s;
+    IntegratorSummary sum;
+    try {
+      const double wall = integrate(su, settings_for(v.solver, v.block, v.explicit_only), w, t0 + dt, &sum);
+      std::printf("%-34s %10.1f %8ld %8ld %10.2f %10.1f %8ld\n", v.name, wall, sum.steps(),
+                  sum.steps_explicit, sum.mean_newton_per_step(), sum.mean_cg_per_newton(),
+                  sum.rejections());
+    } catch (const std::exception& e) {
+      std::printf("%-34s failed: %s\n", v.name, e.what());
+    }
+    std::fflush(stdout);
+  }
+}
