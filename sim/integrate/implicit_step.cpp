@@ -119,8 +119,11 @@ void Integrator::implicit_attempt(const State& s, double h, Attempt& a) {
 
   a.err = std::abs(E) * wrms2(it.x - x_pred, it.x, it.p - p_pred, it.p, settings_.atol,
                               settings_.rtol);
-  // Residual and realised acceleration (switching criterion, §3.4).
-  const VecX& F = newton_->force();
+  // Residual and realised acceleration (switching criterion, §3.4). The force is evaluated at
+  // the converged iterate: the Newton object holds the force before the last correction, which
+  // after a single iteration is the predictor's residual and would overstate a_max by orders.
+  VecX F;
+  model_.forces(it, F);
   const double m = model_.params().mass;
   double amax = 0;
   for (Index i = 0; i < static_cast<Index>(F.size() / 3); ++i) {
