@@ -1,0 +1,171 @@
+// Output files of crumple-analyze; see write_results.hpp.
+#include "analysis/run/write_results.hpp"
+
+#include "analysis/facets/area_distribution.hpp"
+#include "analysis/fits/facet_shape.hpp"
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace crumple::analysis {
+namespace {
+
+/// NaN and infinities are not JSON; they become null.
+nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+nlohmann::json fit_json(const std::optional<LogLawFit>& f, const std::optional<double>& D) {
+  if (!f) return nullptr;
+  nlohmann::json j = {{"model", "l = C ln(1 + n/n0)"},
+                      {"C", num(f->C)},
+                      {"sigma_C", num(f->sigma_C)},
+                      {"n0", num(f->n0)},
+                      {"sigma_n0", num(f->sigma_n0)},
+                      {"corr_C_n0", num(f->corr)},
+                      {"rss", num(f->rss)},
+                      {"dof", f->dof},
+                      {"reduced_chi2", num(f->chi2_red)},
+                      {"r2", num(f->r2)},
+                      {"converged", f->converged},
+                      {"iterations", f->iterations}};
+  if (D) {
+    const auto k = to_experiment_constants(*f, *D);
+    j["c1"] = num(k.c1);
+    j["sigma_c1"] = num(k.sigma_c1);
+    j["c2"] = num(k.c2);
+    j["sigma_c2"] = num(k.sigma_c2);
+    j["n0_experiment"] = 10.0 * *D;  // n0 = D / c2 with c2 = 0.1 (statistics.md §2.2)
+  }
+  return j;
+}
+
+std::string cycle_tag(int cycle) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%04d", cycle);
+  return buf;
+}
+
+std::ofstream open_out(const std::filesystem::path& p) {
+  std::ofstream f(p);
+  if (!f) throw std::runtime_error("cannot write " + p.string());
+  f.precision(10);
+  return f;
+}
+
+}  // namespace
+
+nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const AnalyzeOptions& opt) {
+  nlohmann::json j;
+  j["input"] = {{"path", run.path},
+                {"meta", run.meta},
+                {"length_unit_m", run.length_unit_m},
+                {"compaction", res.compaction ? nlohmann::json(*res.compaction) : nlohmann::json()},
+                {"n_cycles", run.cycles.size()}};
+  j["warnings"] = res.warnings;
+  j["parameters"] = {
+      {"threshold", opt.threshold},
+      {"threshold_note", "crease when |p| > threshold, p in curvature units 2 sin(theta/2)"},
+      {"px_per_cm", opt.px_per_cm},
+      {"crease_px", opt.crease_px},
+      {"close_px", opt.segment.close_px},
+      {"min_facet_px", opt.segment.min_facet_px},
+      {"bootstrap_resamples", opt.bootstrap},
+      {"seed", opt.seed},
+      {"area_bin_ratio", kAreaBinRatio},
+      {"tau", kTau}};
+  j["sheet"] = {{"L0_m", res.L0_m},
+                {"area_m2", res.area_m2},
+                {"nodes", run.mesh.ref_positions.size()},
+                {"triangles", run.mesh.triangles.size()},
+                {"hinges", run.mesh.hinges.size()},
+                {"image_width_px", res.image_width},
+                {"image_height_px", res.image_height},
+                {"px_per_m", res.px_per_m}};
+  j["resolution"] = {{"mean_triangle_area_m2", res.mean_triangle_area_m2},
+                     {"pixel_floor_m2", res.pixel_floor_m2},
+                     {"smallest_resolvable_area_m2", res.smallest_resolvable_m2},
+                     {"smallest_resolvable_x", res.smallest_resolvable_m2 / res.area_m2}};
+  j["cycles"] = nlohmann::json::array();
+  for (const auto& c : res.cycles) {
+    nlohmann::json cj = {{"cycle", c.cycle},
+                         {"crease_edges", c.crease_edges},
+                         {"new_crease_edges", c.new_crease_edges},
+                         {"crease_length_m", c.crease_length_m},
+                         {"crease_length_L0", c.crease_length_L0},
+                         {"new_crease_length_m", c.new_crease_length_m},
+                         {"new_crease_length_L0", c.new_crease_length_L0},
+                         {"perimeter_P", c.perimeter_P},
+                         {"n_facets", c.facets.size()},
+                         {"n_border_facets", std::count_if(c.facets.begin(), c.facets.end(),
+                                                           [](auto& f) { return f.touches_border; })},
+                         {"mean_area_x", c.mean_x},
+                         {"mean_area_m2", c.mean_area_m2},
+                         {"mean_area_L0sq", c.mean_area_m2 / (res.L0_m * res.L0_m)},
+                         {"sheet_px", c.sheet_px},
+                         {"crease_px", c.crease_px},
+                         {"speck_px", c.speck_px},
+                         {"smallest_resolvable_xi",
+                          c.mean_x > 0 ? num(res.smallest_resolvable_m2 / res.area_m2 / c.mean_x)
+                                       : nlohmann::json()}};
+    if (c.shape) {
+      const auto& s = *c.shape;
+      cj["a_fit"] = num(s.a_fit);
+      cj["a_fit_interval95"] = {num(s.a_fit_lo), num(s.a_fit_hi)};
+      cj["a_moment"] = num(s.a_moment);
+      cj["a_univ"] = num(s.a_univ);
+      cj["ks_distance"] = num(s.ks);
+      cj["ks_pvalue"] = num(s.ks_p);
+      cj["ks_distance_univ"] = num(s.ks_univ);
+    }
+    j["cycles"].push_back(cj);
+  }
+  j["log_fit"] = {{"crease_length_L0", fit_json(res.fit_length, res.compaction)},
+                  {"perimeter_P", fit_json(res.fit_P, res.compaction)},
+                  {"note", res.fit_note}};
+  return j;
+}
+
+void write_results(const std::string& dir_s, const RunData& run, const RunAnalysis& res,
+                   const AnalyzeOptions& opt) {
+  const std::filesystem::path dir(dir_s);
+  std::filesystem::create_directories(dir);
+  open_out(dir / "stats.json") << stats_json(run, res, opt).dump(2) << "\n";
+
+  auto cyc = open_out(dir / "cycles.csv");
+  cyc << "cycle,crease_edges,crease_length_m,crease_length_L0,new_crease_length_m,perimeter_P,"
+         "n_facets,mean_area_m2,mean_area_x,a_fit,a_fit_lo,a_fit_hi,a_moment,a_univ,ks_distance,"
+         "ks_pvalue\n";
+  auto fac = open_out(dir / "facets.csv");
+  fac << "cycle,facet_id,area_m2,x,xi,touches_border\n";
+  auto dis = open_out(dir / "distribution.csv");
+  dis << "cycle,bin_lo,bin_hi,count,density\n";
+  for (const auto& c : res.cycles) {
+    cyc << c.cycle << ',' << c.crease_edges << ',' << c.crease_length_m << ','
+        << c.crease_length_L0 << ',' << c.new_crease_length_m << ',' << c.perimeter_P << ','
+        << c.facets.size() << ',' << c.mean_area_m2 << ',' << c.mean_x;
+    if (c.shape)
+      cyc << ',' << c.shape->a_fit << ',' << c.shape->a_fit_lo << ',' << c.shape->a_fit_hi << ','
+          << c.shape->a_moment << ',' << c.shape->a_univ << ',' << c.shape->ks << ','
+          << c.shape->ks_p;
+    else
+      cyc << ",,,,,,,";
+    cyc << '\n';
+    for (const auto& f : c.facets)
+      fac << c.cycle << ',' << f.id << ',' << f.area_m2 << ',' << f.x << ',' << f.xi << ','
+          << (f.touches_border ? 1 : 0) << '\n';
+    for (const auto& b : c.distribution)
+      dis << c.cycle << ',' << b.lo << ',' << b.hi << ',' << b.count << ',' << b.density << '\n';
+    const std::string tag = cycle_tag(c.cycle);
+    if (!cv::imwrite((dir / ("crease_" + tag + ".png")).string(), c.crease_image) ||
+        !cv::imwrite((dir / ("facets_" + tag + ".png")).string(), c.facet_image))
+      throw std::runtime_error("cannot write PNGs into " + dir.string());
+  }
+  if (!cyc || !fac || !dis) throw std::runtime_error("error writing CSV files into " + dir.string());
+}
+
+}  // namespace crumple::analysis

@@ -1,0 +1,55 @@
+"""Helpers shared by the pipeline's plot and report scripts: input checks that fail with a clear
+message, the experimental constants from data/, and the fragmentation-model density
+phi(xi; a) of statistics.md section 3.3."""
+import csv
+import json
+import math
+import os
+import sys
+
+REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+
+
+def die(msg):
+    print(f"{os.path.basename(sys.argv[0])}: error: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def load_json(path, what):
+    if not os.path.isfile(path):
+        die(f"missing {what}: {path}")
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except json.JSONDecodeError as e:
+        die(f"{what} {path} is not valid JSON: {e}")
+
+
+def read_csv(path):
+    """Rows of a CSV file as dicts; lines starting with '#' are comments."""
+    if not os.path.isfile(path):
+        die(f"missing data file: {path}")
+    with open(path) as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+def law_constants():
+    """c1, c2 of the crease-length law (data/crease_length_law_constants.csv)."""
+    rows = {r["name"]: float(r["value"]) for r in
+            read_csv(os.path.join(REPO, "data", "crease_length_law_constants.csv"))}
+    return rows["c1"], rows["c2"]
+
+
+def experimental_law(n, compaction):
+    """l/L0 = c1 (1 - D) ln(1 + c2 n / D) (statistics.md section 2.1)."""
+    c1, c2 = law_constants()
+    return [c1 * (1 - compaction) * math.log(1 + c2 * k / compaction) for k in n]
+
+
+def phi(xi, a):
+    """phi(xi; a) = a(a+1)/(2 Gamma(a)) z^(a/2-1) exp(-sqrt z), z = a(a+1) xi."""
+    import numpy as np
+    from scipy.special import gammaln
+    k = a * (a + 1.0)
+    z = k * np.asarray(xi, dtype=float)
+    return np.exp(math.log(k) - math.log(2.0) - gammaln(a) + (a / 2 - 1) * np.log(z) - np.sqrt(z))

@@ -1,0 +1,132 @@
+// Fits: the log law recovers known (C, n0) within its reported uncertainty; the facet-shape
+// estimators recover a known a from samples of phi; the universal a; the log-binned density.
+#include "analysis/facets/area_distribution.hpp"
+#include "analysis/fits/facet_shape.hpp"
+#include "analysis/fits/log_law.hpp"
+#include "analysis/fits/shape_bootstrap.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+using namespace crumple::analysis;
+
+TEST(LogLaw, ExactDataRecovered) {
+  std::vector<double> n, l;
+  for (int i = 1; i <= 6; ++i) n.push_back(i), l.push_back(14.0 * std::log(1.0 + i / 2.7));
+  const LogLawFit f = fit_log_law(n, l);
+  EXPECT_TRUE(f.converged);
+  EXPECT_NEAR(f.C, 14.0, 1e-6);
+  EXPECT_NEAR(f.n0, 2.7, 1e-6);
+  EXPECT_NEAR(f.r2, 1.0, 1e-12);
+}
+
+TEST(LogLaw, UncertaintyCoversTruth) {
+  const double C = 30.0, n0 = 2.5, noise = 0.6;
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> N(0.0, noise);
+  int in1_C = 0, in1_n0 = 0, in3 = 0;
+  const int R = 300;
+  for (int r = 0; r < R; ++r) {
+    std::vector<double> n, l;
+    for (int i = 1; i <= 10; ++i) n.push_back(i), l.push_back(C * std::log(1.0 + i / n0) + N(rng));
+    const LogLawFit f = fit_log_law(n, l);
+    in1_C += std::abs(f.C - C) < f.sigma_C;
+    in1_n0 += std::abs(f.n0 - n0) < f.sigma_n0;
+    in3 += std::abs(f.C - C) < 3 * f.sigma_C && std::abs(f.n0 - n0) < 3 * f.sigma_n0;
+  }
+  // Nominal 1-sigma coverage is 68 %; with 8 degrees of freedom the estimated sigma scatters,
+  // so a little less is expected.
+  std::printf("log-law coverage over %d noisy realisations: 1-sigma C %.2f, n0 %.2f; 3-sigma both %.2f\n",
+              R, in1_C / double(R), in1_n0 / double(R), in3 / double(R));
+  EXPECT_GE(in1_C, 0.6 * R);
+  EXPECT_GE(in1_n0, 0.6 * R);
+  EXPECT_GE(in3, 0.95 * R);
+}
+
+TEST(LogLaw, WeightedChi2AndConversion) {
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> N(0.0, 1.0);
+  std::vector<double> n, l, s;
+  for (int i = 1; i <= 24; ++i) {
+    const double sig = 0.2 + 0.05 * i;
+    n.push_back(i), s.push_back(sig), l.push_back(52 * 0.73 * std::log(1 + 0.1 * i / 0.27) + sig * N(rng));
+  }
+  const LogLawFit f = fit_log_law(n, l, s);
+  EXPECT_TRUE(f.weighted);
+  EXPECT_NEAR(f.chi2_red, 1.0, 0.6);  // chi^2/22 has standard deviation 0.3
+  const auto k = to_experiment_constants(f, 0.27);
+  EXPECT_NEAR(k.c1, 52.0, 4 * k.sigma_c1);
+  EXPECT_NEAR(k.c2, 0.1, 4 * k.sigma_c2);
+  EXPECT_THROW(fit_log_law({1, 2}, {1, 2}), std::invalid_argument);
+}
+
+TEST(FacetShape, DensityAndCdfConsistent) {
+  for (double a : {0.4, 1.0, 2.5}) {
+    // integrate phi on a log grid and compare with F; also check <xi> = 1
+    double F = 0, mean = 0;
+    const double lo = std::log(1e-10), hi = std::log(1e4);  // the stretched-exponential tail is long at small a
+    const int M = 20000;
+    for (int i = 0; i < M; ++i) {
+      const double u = lo + (i + 0.5) * (hi - lo) / M, xi = std::exp(u);
+      const double w = phi_density(xi, a) * xi * (hi - lo) / M;
+      F += w;
+      mean += w * xi;
+    }
+    EXPECT_NEAR(F + phi_cdf(1e-10, a), phi_cdf(1e4, a), 2e-4) << a;
+    EXPECT_NEAR(mean, 1.0, 2e-3) << a;
+  }
+}
+
+TEST(FacetShape, RecoversKnownA) {
+  for (double a : {0.6, 1.5}) {
+    const auto xi = scaled_areas(sample_phi(4000, a, 11));
+    const double fit = fit_a_mle(xi);
+    std::printf("a = %.2f: a_fit %.4f, a_moment %.4f (4000 samples)\n", a, fit, a_moment(xi));
+    EXPECT_NEAR(fit / a, 1.0, 0.06) << a;
+    EXPECT_NEAR(a_moment(xi) / a, 1.0, 0.2) << a;
+    const Interval iv = bootstrap_a_interval(xi, 60, 5);
+    EXPECT_LT(iv.lo, a);
+    EXPECT_GT(iv.hi, a);
+    const double d = ks_distance(xi, fit);
+    EXPECT_LT(d, 1.63 / std::sqrt(4000.0));  // 1 % critical value, conservative for a fitted a
+    EXPECT_GT(ks_distance(xi, 3.0 * a), 3.0 * d);
+  }
+}
+
+TEST(FacetShape, KsPValueDistinguishesModels) {
+  const auto good = scaled_areas(sample_phi(300, 1.0, 21));
+  const double pg = ks_pvalue_parametric(300, fit_a_mle(good), ks_distance(good, fit_a_mle(good)), 100, 9);
+  EXPECT_GT(pg, 0.01);
+  // Uniform areas are not phi-distributed at any a.
+  std::vector<double> u;
+  for (int i = 1; i <= 300; ++i) u.push_back(i / 300.0);
+  const auto xi = scaled_areas(u);
+  const double a = fit_a_mle(xi);
+  EXPECT_LT(ks_pvalue_parametric(300, a, ks_distance(xi, a), 100, 9), 0.02);
+}
+
+TEST(FacetShape, UniversalCurve) {
+  // statistics.md §6.4: a = 1 at s = 2/tau^2; a = 2 at s = 3/(8 tau^2).
+  EXPECT_NEAR(a_universal(2.0 / (kTau * kTau)), 1.0, 1e-9);
+  EXPECT_NEAR(a_universal(3.0 / (8.0 * kTau * kTau)), 2.0, 1e-9);
+  EXPECT_LT(a_universal(1e-2), a_universal(1e-3));  // more facets, larger a
+}
+
+TEST(AreaDistribution, NormalisedLogBins) {
+  const auto xi = scaled_areas(sample_phi(2000, 0.8, 4));
+  const auto bins = log_binned_density(xi);
+  double total = 0;
+  long count = 0;
+  for (const auto& b : bins) {
+    EXPECT_NEAR(b.hi / b.lo, kAreaBinRatio, 1e-12);
+    total += b.density * (b.hi - b.lo);
+    count += b.count;
+  }
+  EXPECT_NEAR(total, 1.0, 1e-12);
+  EXPECT_EQ(count, 2000);
+  EXPECT_LE(bins.front().lo, *std::min_element(xi.begin(), xi.end()));
+  EXPECT_GT(bins.back().hi, *std::max_element(xi.begin(), xi.end()));
+}

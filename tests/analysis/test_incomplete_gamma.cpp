@@ -1,0 +1,33 @@
+// Tests of gamma_p (analysis/fits/incomplete_gamma.hpp) against closed forms and independent
+// reference values (scipy.special.gammainc).
+#include "analysis/fits/incomplete_gamma.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using crumple::analysis::gamma_p;
+
+TEST(IncompleteGamma, ClosedForms) {
+  for (double x : {1e-4, 0.1, 0.7, 1.0, 2.5, 6.0, 30.0}) {
+    EXPECT_NEAR(gamma_p(1.0, x), 1.0 - std::exp(-x), 1e-13) << x;
+    EXPECT_NEAR(gamma_p(0.5, x), std::erf(std::sqrt(x)), 1e-13) << x;
+    EXPECT_NEAR(gamma_p(3.0, x), 1.0 - std::exp(-x) * (1.0 + x + 0.5 * x * x), 1e-13) << x;
+  }
+}
+
+TEST(IncompleteGamma, ReferenceValues) {
+  struct Case { double a, x, p; };
+  for (const Case& c : {Case{0.3, 5.0, 0.9993486812492816}, Case{10, 3, 0.0011024881301154815},
+                        Case{50, 60, 0.9155933189063082}, Case{2.5, 0.1, 0.0008861387888124438},
+                        Case{0.05, 0.01, 0.8155598057412847}, Case{7.5, 7.5, 0.5485827887742752},
+                        Case{200, 190, 0.2433474271006237}})
+    EXPECT_NEAR(gamma_p(c.a, c.x), c.p, 1e-11 * std::max(1.0, c.p)) << c.a << " " << c.x;
+}
+
+TEST(IncompleteGamma, LimitsAndDomain) {
+  EXPECT_EQ(gamma_p(2.0, 0.0), 0.0);
+  EXPECT_NEAR(gamma_p(2.0, 1e3), 1.0, 1e-15);
+  EXPECT_THROW(gamma_p(0.0, 1.0), std::domain_error);
+  EXPECT_THROW(gamma_p(1.0, -1.0), std::domain_error);
+}
