@@ -1,0 +1,376 @@
+// Configuration loading with file:line:column errors, --set overrides and the resolved YAML
+// (config.hpp). The schema is the code below: one reader call per key, with its range.
+#include "sim/io/config.hpp"
+
+#include "sim/core/errors.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace crumple {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Context {
+  std::string file;
+  std::map<std::string, std::string> overrides;  // dotted key -> "key=value" as given
+
+  std::string where(const YAML::Node& n, const std::string& dotted) const {
+    auto it = overrides.find(dotted);
+    if (it != overrides.end()) return "--set " + it->second;
+    std::ostringstream os;
+    os << file << ':' << n.Mark().line + 1 << ':' << n.Mark().column + 1;
+    return os.str();
+  }
+  [[noreturn]] void fail(const YAML::Node& n, const std::string& dotted,
+                         const std::string& what) const {
+    throw InputError(where(n, dotted) + ": " + dotted + ": " + what);
+  }
+};
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+std::string scalar_text(const YAML::Node& n) {
+  if (n.IsScalar()) return "'" + n.Scalar() + "'";
+  if (n.IsSequence()) return "a list";
+  if (n.IsMap()) return "a map";
+  return "nothing";
+}
+
+class Section {
+ public:
+  Section(const YAML::Node& root, const std::string& name, const Context& ctx,
+          std::vector<std::string> keys)
+      : name_(name), ctx_(ctx) {
+    node_ = root[name];
+    if (!node_.IsDefined() || node_.IsNull()) return;
+    if (!node_.IsMap()) ctx_.fail(node_, name, "expected a map of keys, got " + scalar_text(node_));
+    for (auto it = node_.begin(); it != node_.end(); ++it) {
+      const std::string key = it->first.Scalar();
+      bool known = false;
+      for (const auto& k : keys) known = known || k == key;
+      if (!known)
+        ctx_.fail(it->first, name + "." + key, "unknown key (valid: " + join(keys) + ")");
+    }
+  }
+
+  void number(const char* key, double& out, double lo, double hi, bool lo_open = false) {
+    const YAML::Node n = get(key);
+    if (!n) return;
+    double v;
+    if (!parse(n, v)) ctx_.fail(n, dotted(key), "expected a number, got " + scalar_text(n));
+    const bool low = lo_open ? !(v > lo) : !(v >= lo);
+    if (low || v > hi) {
+      std::ostringstream os;
+      os << "must be " << (lo_open ? "> " : ">= ") << lo;
+      if (std::isfinite(hi)) os << " and <= " << hi;
+      os << ", got " << n.Scalar();
+      ctx_.fail(n, dotted(key), os.str());
+    }
+    out = v;
+  }
+  template <class Int>
+  void integer(const char* key, Int& out, double lo, double hi) {
+    const YAML::Node n = get(key);
+    if (!n) return;
+    double v;
+    if (!parse(n, v) || v != std::floor(v))
+      ctx_.fail(n, dotted(key), "expected a whole number, got " + scalar_text(n));
+    if (v < lo || v > hi) {
+      std::ostringstream os;
+      os << "must be between " << lo << " and " << hi << ", got " << n.Scalar();
+      ctx_.fail(n, dotted(key), os.str());
+    }
+    out = static_cast<Int>(v);
+  }
+  void text(const char* key, std::string& out, const std::vector<std::string>& choices) {
+    const YAML::Node n = get(key);
+    if (!n) return;
+    if (!n.IsScalar()) ctx_.fail(n, dotted(key), "expected a word, got " + scalar_text(n));
+    bool ok = false;
+    for (const auto& c : choices) ok = ok || c == n.Scalar();
+    if (!ok)
+      ctx_.fail(n, dotted(key), "unknown value '" + n.Scalar() + "' (valid: " + join(choices) + ")");
+    out = n.Scalar();
+  }
+  void flag(const char* key, bool& out) {
+    const YAML::Node n = get(key);
+    if (!n) return;
+    try {
+      out = n.as<bool>();
+    } catch (const YAML::Exception&) {
+      ctx_.fail(n, dotted(key), "expected true or false, got " + scalar_text(n));
+    }
+  }
+  YAML::Node get(const char* key) const {
+    if (!node_.IsDefined() || node_.IsNull()) return YAML::Node(YAML::NodeType::Undefined);
+    const YAML::Node n = node_[key];
+    if (!n.IsDefined() || n.IsNull()) return YAML::Node(YAML::NodeType::Undefined);
+    return n;
+  }
+  std::string dotted(const char* key) const { return name_ + "." + key; }
+
+ private:
+  static bool parse(const YAML::Node& n, double& v) {
+    if (!n.IsScalar()) return false;
+    try {
+      v = n.as<double>();
+      return std::isfinite(v);
+    } catch (const YAML::Exception&) {
+      return false;
+    }
+  }
+  std::string name_;
+  const Context& ctx_;
+  YAML::Node node_;
+};
+
+void apply_override(YAML::Node& root, const std::string& spec, Context& ctx) {
+  const auto eq = spec.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set " + spec + ": expected dotted.key=value");
+  const std::string key = spec.substr(0, eq), value = spec.substr(eq + 1);
+  std::vector<std::string> parts;
+  std::stringstream ss(key);
+  for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+  if (parts.size() < 2) throw InputError("--set " + spec + ": expected section.key=value");
+  YAML::Node parsed;
+  try {
+    parsed = YAML::Load(value);
+  } catch (const YAML::Exception& e) {
+    throw InputError("--set " + spec + ": cannot parse the value: " + e.msg);
+  }
+  // Walk down with fresh handles (yaml-cpp nodes are references; assignment would alias).
+  std::vector<YAML::Node> path{root};
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    YAML::Node next = path.back()[parts[i]];
+    if (next.IsDefined() && !next.IsNull() && !next.IsMap())
+      throw InputError("--set " + spec + ": " + parts[i] + " is not a section");
+    path.push_back(next);
+  }
+  path.back()[parts.back()] = parsed;
+  ctx.overrides[key] = spec;
+}
+
+Params parse(YAML::Node root, Context& ctx) {
+  Params p;
+  p.file = ctx.file;
+  if (root.IsNull() || !root.IsDefined()) root = YAML::Node(YAML::NodeType::Map);
+  if (!root.IsMap())
+    throw InputError(ctx.file + ":1:1: the configuration must be a map of sections");
+  const std::vector<std::string> sections{"mesh",    "material", "integrator",
+                                          "contact", "protocol", "output"};
+  for (auto it = root.begin(); it != root.end(); ++it) {
+    const std::string key = it->first.Scalar();
+    bool ok = false;
+    for (const auto& s : sections) ok = ok || s == key;
+    if (!ok) ctx.fail(it->first, key, "unknown section (valid: " + join(sections) + ")");
+  }
+
+  Section mesh(root, "mesh", ctx, {"shape", "nodes", "size", "seed", "lloyd_iterations"});
+  mesh.text("shape", p.mesh.shape, {"square", "disk"});
+  mesh.integer("nodes", p.mesh.nodes, 10, 1e8);
+  mesh.number("size", p.mesh.size, 0, kInf, true);
+  mesh.integer("seed", p.mesh.seed, 0, 9007199254740992.0);
+  mesh.integer("lloyd_iterations", p.mesh.lloyd_iterations, 0, 1e5);
+
+  Section mat(root, "material",ctx, {"thickness", "young_modulus", "density", "poisson", "ks", "kb",
+                                     "mass", "mass_scale", "drag_ratio", "internal_damping_ratio"});
+  auto& m = p.material;
+  mat.number("thickness", m.thickness, 0, kInf, true);
+  mat.number("young_modulus", m.young_modulus, 0, kInf, true);
+  mat.number("density", m.density, 0, kInf, true);
+  mat.number("poisson", m.poisson, 1.0 / 3.0 - 1e-12, 1.0 / 3.0 + 1e-12);
+  mat.number("ks", m.ks, 0, kInf, true);
+  mat.number("kb", m.kb, 0, kInf, true);
+  mat.number("mass", m.mass, 0, kInf, true);
+  const int direct = (m.ks > 0) + (m.kb > 0) + (m.mass > 0);
+  if (direct != 0 && direct != 3) {
+    const char* missing = m.ks > 0 ? (m.kb > 0 ? "mass" : "kb") : "ks";
+    ctx.fail(root["material"], std::string("material.") + missing,
+             "ks, kb and mass are given together or not at all");
+  }
+  mat.number("mass_scale", m.mass_scale, 0, kInf, true);
+  mat.number("drag_ratio", m.drag_ratio, 0, kInf);
+  mat.number("internal_damping_ratio", m.internal_damping_ratio, 0, kInf);
+
+  Section in(root, "integrator", ctx,
+             {"mode_initial", "bdf_order", "rtol", "atol", "h_init", "h_min", "h_max",
+              "max_growth", "newton_tol", "newton_max_iters", "linear_solver", "block_size",
+              "cg_tol", "cg_max_iters", "switch_up", "switch_down", "switch_window",
+              "switch_min_steps", "explicit_rtol", "plasticity", "plastic_c0", "plastic_gamma",
+              "plastic_rate"});
+  auto& s = p.integrator;
+  std::string mode = s.mode_initial == IntegrationMode::Implicit ? "implicit" : "explicit";
+  in.text("mode_initial", mode, {"implicit", "explicit"});
+  s.mode_initial = parse_integration_mode(mode);
+  in.integer("bdf_order", s.bdf_order, 1, 4);
+  in.number("rtol", s.rtol, 0, kInf, true);
+  in.number("atol", s.atol, 0, kInf, true);
+  in.number("h_init", s.h_init, 0, kInf, true);
+  in.number("h_min", s.h_min, 0, kInf, true);
+  in.number("h_max", s.h_max, 0, kInf, true);
+  in.number("max_growth", s.max_growth, 1, kInf, true);
+  in.number("newton_tol", s.newton_tol, 0, kInf, true);
+  in.integer("newton_max_iters", s.newton_max_iters, 1, 1000);
+  std::string solver = to_string(s.linear_solver);
+  in.text("linear_solver", solver, {"block_jacobi", "cg", "incomplete_cholesky", "ldlt"});
+  s.linear_solver = parse_linear_solver(solver);
+  in.integer("block_size", s.block_size, 3, 1e6);
+  in.number("cg_tol", s.cg_tol, 0, 1, true);
+  in.integer("cg_max_iters", s.cg_max_iters, 1, 1e9);
+  in.number("switch_up", s.switch_up, 0, kInf, true);
+  in.number("switch_down", s.switch_down, 0, kInf);
+  in.integer("switch_window", s.switch_window, 1, 1e6);
+  in.integer("switch_min_steps", s.switch_min_steps, 0, 1e9);
+  in.number("explicit_rtol", s.explicit_rtol, 0, kInf, true);
+  in.flag("plasticity", s.plasticity);
+  in.number("plastic_c0", s.plastic_c0, 0, 2);
+  in.number("plastic_gamma", s.plastic_gamma, 0, kInf);
+  in.number("plastic_rate", s.plastic_rate, 0, kInf, true);
+  if (s.h_min > s.h_max) ctx.fail(in.get("h_min") ? in.get("h_min") : root, "integrator.h_min",
+                                  "must not exceed integrator.h_max");
+
+  Section ct(root, "contact", ctx, {"enabled", "sigma", "refinement", "stiffness", "skin"});
+  ct.flag("enabled", p.contact.enabled);
+  ct.number("sigma", p.contact.sigma, 0, kInf);
+  ct.text("refinement", p.contact.refinement, {"auto", "0", "1", "2", "3"});
+  ct.number("stiffness", p.contact.stiffness, 0, kInf);
+  ct.number("skin", p.contact.skin, 0, 10);
+
+  Section pr(root, "protocol", ctx, {"cycles", "t_max", "stages"});
+  pr.integer("cycles", p.protocol.cycles, 1, 1e6);
+  pr.number("t_max", p.protocol.t_max, 0, kInf, true);
+  const YAML::Node stages = pr.get("stages");
+  if (stages) {
+    if (!stages.IsSequence())
+      ctx.fail(stages, "protocol.stages", "expected a list of stages, got " + scalar_text(stages));
+    p.protocol.stages = stages;
+  } else {
+    p.protocol.stages = YAML::Node(YAML::NodeType::Sequence);
+  }
+
+  Section out(root, "output", ctx, {"dt", "checkpoint_wall_s", "crease_threshold", "xdmf"});
+  out.number("dt", p.output.dt, 0, kInf, true);
+  out.number("checkpoint_wall_s", p.output.checkpoint_wall_s, 0, kInf);
+  out.number("crease_threshold", p.output.crease_threshold, 0, 4, true);
+  out.flag("xdmf", p.output.xdmf);
+  return p;
+}
+
+Params load_from(const std::string& text, const std::string& name,
+                 const std::vector<std::string>& overrides) {
+  Context ctx;
+  ctx.file = name;
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(name + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
+  }
+  if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  for (const auto& o : overrides) apply_override(root, o, ctx);
+  return parse(root, ctx);
+}
+
+}  // namespace
+
+Params load_config(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the configuration file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return load_from(ss.str(), path, overrides);
+}
+
+Params load_config_text(const std::string& text, const std::string& name,
+                        const std::vector<std::string>& overrides) {
+  return load_from(text, name, overrides);
+}
+
+std::string resolved_yaml(const Params& p) {
+  YAML::Emitter e;
+  e.SetDoublePrecision(17);
+  e << YAML::BeginMap;
+  e << YAML::Key << "mesh" << YAML::Value << YAML::BeginMap;
+  e << YAML::Key << "shape" << YAML::Value << p.mesh.shape;
+  e << YAML::Key << "nodes" << YAML::Value << p.mesh.nodes;
+  e << YAML::Key << "size" << YAML::Value << p.mesh.size;
+  e << YAML::Key << "seed" << YAML::Value << p.mesh.seed;
+  e << YAML::Key << "lloyd_iterations" << YAML::Value << p.mesh.lloyd_iterations;
+  e << YAML::EndMap;
+  const auto& m = p.material;
+  e << YAML::Key << "material" << YAML::Value << YAML::BeginMap;
+  e << YAML::Key << "thickness" << YAML::Value << m.thickness;
+  e << YAML::Key << "young_modulus" << YAML::Value << m.young_modulus;
+  e << YAML::Key << "density" << YAML::Value << m.density;
+  e << YAML::Key << "poisson" << YAML::Value << m.poisson;
+  if (m.ks > 0) {
+    e << YAML::Key << "ks" << YAML::Value << m.ks;
+    e << YAML::Key << "kb" << YAML::Value << m.kb;
+    e << YAML::Key << "mass" << YAML::Value << m.mass;
+  }
+  e << YAML::Key << "mass_scale" << YAML::Value << m.mass_scale;
+  e << YAML::Key << "drag_ratio" << YAML::Value << m.drag_ratio;
+  e << YAML::Key << "internal_damping_ratio" << YAML::Value << m.internal_damping_ratio;
+  e << YAML::EndMap;
+  const auto& s = p.integrator;
+  e << YAML::Key << "integrator" << YAML::Value << YAML::BeginMap;
+  e << YAML::Key << "mode_initial" << YAML::Value
+    << (s.mode_initial == IntegrationMode::Implicit ? "implicit" : "explicit");
+  e << YAML::Key << "bdf_order" << YAML::Value << s.bdf_order;
+  e << YAML::Key << "rtol" << YAML::Value << s.rtol;
+  e << YAML::Key << "atol" << YAML::Value << s.atol;
+  e << YAML::Key << "h_init" << YAML::Value << s.h_init;
+  e << YAML::Key << "h_min" << YAML::Value << s.h_min;
+  e << YAML::Key << "h_max" << YAML::Value << s.h_max;
+  e << YAML::Key << "max_growth" << YAML::Value << s.max_growth;
+  e << YAML::Key << "newton_tol" << YAML::Value << s.newton_tol;
+  e << YAML::Key << "newton_max_iters" << YAML::Value << s.newton_max_iters;
+  e << YAML::Key << "linear_solver" << YAML::Value << to_string(s.linear_solver);
+  e << YAML::Key << "block_size" << YAML::Value << s.block_size;
+  e << YAML::Key << "cg_tol" << YAML::Value << s.cg_tol;
+  e << YAML::Key << "cg_max_iters" << YAML::Value << s.cg_max_iters;
+  e << YAML::Key << "switch_up" << YAML::Value << s.switch_up;
+  e << YAML::Key << "switch_down" << YAML::Value << s.switch_down;
+  e << YAML::Key << "switch_window" << YAML::Value << s.switch_window;
+  e << YAML::Key << "switch_min_steps" << YAML::Value << s.switch_min_steps;
+  e << YAML::Key << "explicit_rtol" << YAML::Value << s.explicit_rtol;
+  e << YAML::Key << "plasticity" << YAML::Value << s.plasticity;
+  e << YAML::Key << "plastic_c0" << YAML::Value << s.plastic_c0;
+  e << YAML::Key << "plastic_gamma" << YAML::Value << s.plastic_gamma;
+  e << YAML::Key << "plastic_rate" << YAML::Value << s.plastic_rate;
+  e << YAML::EndMap;
+  e << YAML::Key << "contact" << YAML::Value << YAML::BeginMap;
+  e << YAML::Key << "enabled" << YAML::Value << p.contact.enabled;
+  e << YAML::Key << "sigma" << YAML::Value << p.contact.sigma;
+  e << YAML::Key << "refinement" << YAML::Value << p.contact.refinement;
+  e << YAML::Key << "stiffness" << YAML::Value << p.contact.stiffness;
+  e << YAML::Key << "skin" << YAML::Value << p.contact.skin;
+  e << YAML::EndMap;
+  e << YAML::Key << "protocol" << YAML::Value << YAML::BeginMap;
+  e << YAML::Key << "cycles" << YAML::Value << p.protocol.cycles;
+  e << YAML::Key << "t_max" << YAML::Value << p.protocol.t_max;
+  e << YAML::Key << "stages" << YAML::Value << p.protocol.stages;
+  e << YAML::EndMap;
+  e << YAML::Key << "output" << YAML::Value << YAML::BeginMap;
+  e << YAML::Key << "dt" << YAML::Value << p.output.dt;
+  e << YAML::Key << "checkpoint_wall_s" << YAML::Value << p.output.checkpoint_wall_s;
+  e << YAML::Key << "crease_threshold" << YAML::Value << p.output.crease_threshold;
+  e << YAML::Key << "xdmf" << YAML::Value << p.output.xdmf;
+  e << YAML::EndMap;
+  e << YAML::EndMap;
+  return std::string(e.c_str()) + "\n";
+}
+
+}  // namespace crumple

@@ -1,0 +1,21 @@
+// Loading and printing the run configuration (DESIGN.md §10). Every key is validated: an
+// unknown key, a wrong type, an out-of-range value, an unknown choice or a YAML syntax error is
+// an InputError "FILE:LINE:COLUMN: section.key: what is wrong" (1-based). `--set dotted.key=value`
+// overrides are applied to the YAML before validation; errors in them name "--set key=value".
+#pragma once
+
+#include "sim/io/params.hpp"
+
+#include <vector>
+
+namespace crumple {
+
+Params load_config(const std::string& path, const std::vector<std::string>& overrides = {});
+/// Parses YAML text as if it were the file `name` (tests, resolved configs).
+Params load_config_text(const std::string& text, const std::string& name,
+                        const std::vector<std::string>& overrides = {});
+/// The full resolved configuration, every key with its value; load_config_text of it gives
+/// the same Params.
+std::string resolved_yaml(const Params& p);
+
+}  // namespace crumple

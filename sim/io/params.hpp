@@ -1,0 +1,67 @@
+// Every parameter of a run, in one typed tree with its defaults (DESIGN.md §2, §10). Filled
+// from YAML by load_config (config.hpp), printed back whole by resolved_yaml and stored in every
+// output file. Keys are the member names; docs/CONFIG.md lists them with types and ranges.
+#pragma once
+
+#include "sim/integrate/settings.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstdint>
+#include <string>
+
+namespace crumple {
+
+struct MeshParams {
+  std::string shape = "square";  ///< square | disk
+  int nodes = 1000;              ///< approximate number of nodes: the resolution knob
+  double size = 0.1;             ///< side length or diameter (m)
+  std::uint64_t seed = 1;        ///< seed of the random mesh
+  int lloyd_iterations = 60;
+};
+
+struct MaterialParams {
+  // Physical description (paper eq. 5-7), used unless ks, kb and mass are all given.
+  double thickness = 2.5e-4;     ///< m (becomes h_eff)
+  double young_modulus = 1e9;    ///< Pa
+  double density = 1400;         ///< kg/m^3 (Mylar)
+  double poisson = 1.0 / 3.0;    ///< fixed by the triangular spring network
+  // Direct model constants (all three or none).
+  double ks = 0, kb = 0, mass = 0;
+  double mass_scale = 1e4;       ///< multiplies the node mass (quasistatic mass scaling)
+  double drag_ratio = 0.01;      ///< b_iso = drag_ratio sqrt(ks m)
+  double internal_damping_ratio = 0.1;  ///< b_int = ratio sqrt(ks m)
+};
+
+struct ContactParams {
+  bool enabled = true;
+  double sigma = 0;              ///< interaction range (m); 0: h_eff
+  std::string refinement = "auto";  ///< auto | 0 | 1 | 2 | 3
+  double stiffness = 0;          ///< contact stiffness; 0: ks
+  double skin = 0.25;            ///< candidate-list skin, fraction of sigma
+};
+
+struct ProtocolParams {
+  int cycles = 1;
+  double t_max = 1e30;           ///< cap on the simulated time of the run (s)
+  YAML::Node stages;             ///< the stage list, validated by the stage registry
+};
+
+struct OutputParams {
+  double dt = 0.01;              ///< simulated time between frames (s)
+  double checkpoint_wall_s = 300;
+  double crease_threshold = 0.05;  ///< |p| above which a hinge counts as creased
+  bool xdmf = true;
+};
+
+struct Params {
+  MeshParams mesh;
+  MaterialParams material;
+  IntegratorSettings integrator;
+  ContactParams contact;
+  ProtocolParams protocol;
+  OutputParams output;
+  std::string file;              ///< the config's path (for messages)
+};
+
+}  // namespace crumple

@@ -1,0 +1,298 @@
+// The HDF5 run file and its XDMF sidecar (run_file.hpp, docs/FILE_FORMAT.md).
+#include "sim/io/run_file.hpp"
+
+#include "sim/io/h5.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace crumple {
+
+namespace {
+
+std::vector<double> to_vec(const VecX& v) { return {v.data(), v.data() + v.size()}; }
+VecX to_eigen(const std::vector<double>& v) { return Eigen::Map<const VecX>(v.data(), v.size()); }
+std::vector<hsize_t> nx3(const VecX& v) { return {static_cast<hsize_t>(v.size() / 3), 3}; }
+
+void write_state(H5::Group& g, const State& s) {
+  h5::write(g, "x", to_vec(s.x), nx3(s.x));
+  h5::write(g, "v", to_vec(s.v), nx3(s.v));
+  h5::write(g, "p", to_vec(s.p));
+  h5::attr(g, "t", s.t);
+}
+State read_state(const H5::Group& g) {
+  State s;
+  s.x = to_eigen(h5::read_doubles(g, "x"));
+  s.v = to_eigen(h5::read_doubles(g, "v"));
+  s.p = to_eigen(h5::read_doubles(g, "p"));
+  s.t = h5::attr_double(g, "t");
+  return s;
+}
+std::string numbered(long k, int width) {
+  std::ostringstream os;
+  os << std::setw(width) << std::setfill('0') << k;
+  return os.str();
+}
+
+void write_mesh(H5::Group& root, const Mesh& m) {
+  H5::Group g = h5::group(root, "mesh");
+  const Index n = m.num_nodes();
+  std::vector<double> ref(3 * n);
+  for (Index i = 0; i < n; ++i)
+    for (int d = 0; d < 3; ++d) ref[3 * i + d] = m.ref(d, i);
+  h5::write(g, "ref_positions", ref, {static_cast<hsize_t>(n), 3});
+  std::vector<std::int32_t> tri, edges, hinges, hinge_edge;
+  for (const auto& t : m.triangles) tri.insert(tri.end(), t.begin(), t.end());
+  for (const auto& e : m.edges) edges.insert(edges.end(), e.begin(), e.end());
+  std::vector<double> factor;
+  for (const auto& h : m.hinges) {
+    hinges.insert(hinges.end(), h.nodes.begin(), h.nodes.end());
+    hinge_edge.push_back(h.edge);
+    factor.push_back(h.rest_factor);
+  }
+  h5::write(g, "triangles", tri, {m.triangles.size(), 3});
+  h5::write(g, "edges", edges, {m.edges.size(), 2});
+  h5::write(g, "rest_lengths", to_vec(m.rest_length));
+  h5::write(g, "hinges", hinges, {m.hinges.size(), 4});
+  h5::write(g, "hinge_edge", hinge_edge);
+  h5::write(g, "hinge_factor", factor);
+  h5::write(g, "boundary", m.boundary);
+  h5::attr(g, "shape", m.shape);
+}
+
+Mesh read_mesh(const H5::Group& root) {
+  H5::Group g = root.openGroup("mesh");
+  std::vector<hsize_t> d;
+  const auto ref = h5::read_doubles(g, "ref_positions", &d);
+  Eigen::Matrix3Xd pos(3, d.at(0));
+  for (hsize_t i = 0; i < d[0]; ++i)
+    for (int k = 0; k < 3; ++k) pos(k, i) = ref[3 * i + k];
+  const auto tri = h5::read_ints(g, "triangles");
+  std::vector<std::array<Index, 3>> tris(tri.size() / 3);
+  for (std::size_t t = 0; t < tris.size(); ++t) tris[t] = {tri[3 * t], tri[3 * t + 1], tri[3 * t + 2]};
+  return build_mesh(std::move(pos), std::move(tris), h5::attr_string(g, "shape"));
+}
+
+void write_checkpoint(H5::Group& root, const Checkpoint& c) {
+  H5::Group g = h5::group(root, "checkpoint");
+  H5::Group st = h5::group(g, "state");
+  write_state(st, c.state);
+  if (c.in_stage) {
+    H5::Group sb = h5::group(g, "stage_begin");
+    write_state(sb, c.stage_begin);
+  }
+  h5::write(g, "stepper", c.stepper);
+  h5::attr(g, "cycle", std::int64_t{c.cycle});
+  h5::attr(g, "stage", std::int64_t{c.stage});
+  h5::attr(g, "in_stage", std::int64_t{c.in_stage});
+  h5::attr(g, "stage_t_begin", c.stage_t_begin);
+  h5::attr(g, "rng_at_stage_begin", c.rng_at_stage_begin);
+  h5::attr(g, "contact_at_stage_begin", std::int64_t{c.contact_at_stage_begin});
+  h5::attr(g, "next_frame_t", c.next_frame_t);
+  const Apparatus& a = c.apparatus;
+  h5::attr(g, "rolled", std::int64_t{a.rolled});
+  h5::write(g, "axis", std::vector<double>{a.axis_point.x(), a.axis_point.y(), a.axis_point.z(),
+                                           a.axis_dir.x(), a.axis_dir.y(), a.axis_dir.z(),
+                                           a.radius, a.height});
+}
+
+Checkpoint read_checkpoint(const H5::Group& root) {
+  H5::Group g = root.openGroup("checkpoint");
+  Checkpoint c;
+  c.state = read_state(g.openGroup("state"));
+  c.in_stage = h5::attr_int(g, "in_stage") != 0;
+  if (c.in_stage) c.stage_begin = read_state(g.openGroup("stage_begin"));
+  c.stepper = h5::read_doubles(g, "stepper");
+  c.cycle = static_cast<int>(h5::attr_int(g, "cycle"));
+  c.stage = static_cast<int>(h5::attr_int(g, "stage"));
+  c.stage_t_begin = h5::attr_double(g, "stage_t_begin");
+  c.rng_at_stage_begin = h5::attr_string(g, "rng_at_stage_begin");
+  c.contact_at_stage_begin = h5::attr_int(g, "contact_at_stage_begin") != 0;
+  c.next_frame_t = h5::attr_double(g, "next_frame_t");
+  c.apparatus.rolled = h5::attr_int(g, "rolled") != 0;
+  const auto a = h5::read_doubles(g, "axis");
+  c.apparatus.axis_point = Vec3(a.at(0), a.at(1), a.at(2));
+  c.apparatus.axis_dir = Vec3(a.at(3), a.at(4), a.at(5));
+  c.apparatus.radius = a.at(6);
+  c.apparatus.height = a.at(7);
+  return c;
+}
+
+template <class F>
+std::vector<double> log_column(const std::vector<LogRow>& log, F f) {
+  std::vector<double> v;
+  v.reserve(log.size());
+  for (const auto& r : log) v.push_back(f(r));
+  return v;
+}
+
+}  // namespace
+
+void write_run_file(const std::string& path, const RunRecord& r) {
+  H5::Exception::dontPrint();
+  H5::H5File file(path, H5F_ACC_TRUNC);
+  H5::Group root = file.openGroup("/");
+  H5::Group meta = h5::group(root, "meta");
+  const RunMeta& m = r.meta;
+  h5::attr(meta, "program_version", m.program_version);
+  h5::attr(meta, "git_revision", m.git_revision);
+  h5::attr(meta, "seed", static_cast<std::int64_t>(m.seed));
+  h5::attr(meta, "threads", std::int64_t{m.threads});
+  h5::attr(meta, "start_time", m.start_time);
+  h5::attr(meta, "end_time", m.end_time);
+  h5::attr(meta, "status", m.status);
+  h5::attr(meta, "length_unit_m", m.length_unit_m);
+  h5::attr(meta, "ks", m.ks);
+  h5::attr(meta, "kb", m.kb);
+  h5::attr(meta, "mass", m.mass);
+  h5::attr(meta, "h_eff", m.h_eff);
+  h5::write_string(root, "config", r.config);
+  write_mesh(root, r.mesh);
+
+  H5::Group frames = h5::group(root, "frames");
+  for (std::size_t k = 0; k < r.frames.size(); ++k) {
+    H5::Group g = h5::group(frames, numbered(static_cast<long>(k), 6));
+    write_state(g, r.frames[k].state);
+    h5::attr(g, "stage", r.frames[k].stage);
+    h5::attr(g, "cycle", std::int64_t{r.frames[k].cycle});
+    h5::attr(g, "step", std::int64_t{r.frames[k].step});
+  }
+  H5::Group cycles = h5::group(root, "cycles");
+  for (const auto& c : r.cycles) {
+    H5::Group g = h5::group(cycles, numbered(c.cycle, 4));
+    h5::write(g, "x", to_vec(c.x), nx3(c.x));
+    h5::write(g, "p", to_vec(c.p));
+    h5::write(g, "crease_mask", c.crease_mask);
+    h5::attr(g, "t", c.t);
+    h5::attr(g, "cycle", std::int64_t{c.cycle});
+    h5::attr(g, "crease_threshold", c.crease_threshold);
+  }
+  H5::Group log = h5::group(root, "log");
+  h5::write(log, "t", log_column(r.log, [](const LogRow& x) { return x.t; }));
+  h5::write(log, "h", log_column(r.log, [](const LogRow& x) { return x.h; }));
+  h5::write(log, "a_ratio", log_column(r.log, [](const LogRow& x) { return x.a_ratio; }));
+  std::vector<std::int8_t> mode;
+  std::vector<std::int32_t> newton, cg, rej, order;
+  for (const auto& x : r.log) {
+    mode.push_back(static_cast<std::int8_t>(x.mode));
+    newton.push_back(x.newton_iters);
+    cg.push_back(x.cg_iters);
+    rej.push_back(x.rejections);
+    order.push_back(x.order);
+  }
+  h5::write(log, "mode", mode);
+  h5::write(log, "order", order);
+  h5::write(log, "newton_iters", newton);
+  h5::write(log, "cg_iters", cg);
+  h5::write(log, "rejections", rej);
+  h5::write(log, "e_stretch", log_column(r.log, [](const LogRow& x) { return x.e_stretch; }));
+  h5::write(log, "e_bend", log_column(r.log, [](const LogRow& x) { return x.e_bend; }));
+  h5::write(log, "e_contact", log_column(r.log, [](const LogRow& x) { return x.e_contact; }));
+  h5::write(log, "e_external", log_column(r.log, [](const LogRow& x) { return x.e_external; }));
+  h5::write(log, "e_kinetic", log_column(r.log, [](const LogRow& x) { return x.e_kinetic; }));
+  if (r.checkpoint) write_checkpoint(root, *r.checkpoint);
+}
+
+RunRecord read_run_file(const std::string& path) {
+  H5::Exception::dontPrint();
+  if (!std::filesystem::exists(path)) throw InputError(path + ": no such file");
+  try {
+    H5::H5File file(path, H5F_ACC_RDONLY);
+    H5::Group root = file.openGroup("/");
+    RunRecord r;
+    H5::Group meta = root.openGroup("meta");
+    r.meta.program_version = h5::attr_string(meta, "program_version");
+    r.meta.git_revision = h5::attr_string(meta, "git_revision");
+    r.meta.seed = static_cast<std::uint64_t>(h5::attr_int(meta, "seed"));
+    r.meta.threads = static_cast<int>(h5::attr_int(meta, "threads"));
+    r.meta.start_time = h5::attr_string(meta, "start_time");
+    r.meta.end_time = h5::attr_string(meta, "end_time");
+    r.meta.status = h5::attr_string(meta, "status");
+    r.meta.length_unit_m = h5::attr_double(meta, "length_unit_m");
+    r.meta.ks = h5::attr_double(meta, "ks");
+    r.meta.kb = h5::attr_double(meta, "kb");
+    r.meta.mass = h5::attr_double(meta, "mass");
+    r.meta.h_eff = h5::attr_double(meta, "h_eff");
+    r.config = h5::read_string(root, "config");
+    r.mesh = read_mesh(root);
+    H5::Group frames = root.openGroup("frames");
+    for (const auto& name : h5::members(frames)) {
+      H5::Group g = frames.openGroup(name);
+      FrameRecord f;
+      f.state = read_state(g);
+      f.stage = h5::attr_string(g, "stage");
+      f.cycle = static_cast<int>(h5::attr_int(g, "cycle"));
+      f.step = static_cast<long>(h5::attr_int(g, "step"));
+      r.frames.push_back(std::move(f));
+    }
+    H5::Group cycles = root.openGroup("cycles");
+    for (const auto& name : h5::members(cycles)) {
+      H5::Group g = cycles.openGroup(name);
+      CycleRecord c;
+      c.x = to_eigen(h5::read_doubles(g, "x"));
+      c.p = to_eigen(h5::read_doubles(g, "p"));
+      c.crease_mask = h5::read_bytes(g, "crease_mask");
+      c.t = h5::attr_double(g, "t");
+      c.cycle = static_cast<int>(h5::attr_int(g, "cycle"));
+      c.crease_threshold = h5::attr_double(g, "crease_threshold");
+      r.cycles.push_back(std::move(c));
+    }
+    H5::Group log = root.openGroup("log");
+    const auto t = h5::read_doubles(log, "t"), hh = h5::read_doubles(log, "h"),
+               a = h5::read_doubles(log, "a_ratio"), es = h5::read_doubles(log, "e_stretch"),
+               eb = h5::read_doubles(log, "e_bend"), ec = h5::read_doubles(log, "e_contact"),
+               ee = h5::read_doubles(log, "e_external"), ek = h5::read_doubles(log, "e_kinetic");
+    const auto mode = h5::read_int8(log, "mode");
+    const auto order = h5::read_ints(log, "order"), newton = h5::read_ints(log, "newton_iters"),
+               cg = h5::read_ints(log, "cg_iters"), rej = h5::read_ints(log, "rejections");
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      LogRow row;
+      row.t = t[k], row.h = hh[k], row.a_ratio = a[k], row.mode = mode[k], row.order = order[k];
+      row.newton_iters = newton[k], row.cg_iters = cg[k], row.rejections = rej[k];
+      row.e_stretch = es[k], row.e_bend = eb[k], row.e_contact = ec[k], row.e_external = ee[k];
+      row.e_kinetic = ek[k];
+      r.log.push_back(row);
+    }
+    if (h5::exists(root, "checkpoint")) r.checkpoint = read_checkpoint(root);
+    return r;
+  } catch (const H5::Exception& e) {
+    throw InputError(path + ": not a readable run file (" + e.getDetailMsg() + ")");
+  }
+}
+
+void write_run_file_atomic(const std::string& path, const RunRecord& r) {
+  const std::string tmp = path + ".new";
+  write_run_file(tmp, r);
+  std::filesystem::rename(tmp, path);
+}
+
+void write_xdmf(const std::string& xdmf_path, const std::string& h5_name, const RunRecord& r) {
+  const Index n = r.mesh.num_nodes();
+  std::ofstream out(xdmf_path + ".new");
+  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+      << "  <Grid Name=\"sheet\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (std::size_t k = 0; k < r.frames.size(); ++k) {
+    const std::string g = "/frames/" + numbered(static_cast<long>(k), 6);
+    out << "   <Grid Name=\"frame" << k << "\" GridType=\"Uniform\">\n"
+        << "    <Time Value=\"" << std::setprecision(12) << r.frames[k].state.t << "\"/>\n"
+        << "    <Topology TopologyType=\"Triangle\" NumberOfElements=\"" << r.mesh.num_triangles()
+        << "\">\n     <DataItem Dimensions=\"" << r.mesh.num_triangles()
+        << " 3\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5_name
+        << ":/mesh/triangles</DataItem>\n    </Topology>\n"
+        << "    <Geometry GeometryType=\"XYZ\">\n     <DataItem Dimensions=\"" << n
+        << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5_name << ":" << g
+        << "/x</DataItem>\n    </Geometry>\n"
+        << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n"
+        << "     <DataItem Dimensions=\"" << n
+        << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5_name << ":" << g
+        << "/v</DataItem>\n    </Attribute>\n   </Grid>\n";
+  }
+  out << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  out.close();
+  std::filesystem::rename(xdmf_path + ".new", xdmf_path);
+}
+
+}  // namespace crumple

@@ -1,0 +1,56 @@
+// The run file (docs/FILE_FORMAT.md): everything a run produced, kept in memory and written as
+// a whole to PATH.tmp.new, then renamed to PATH.tmp, at every checkpoint; renamed to PATH only
+// when the run is complete. A killed run therefore leaves a consistent PATH.tmp to resume from
+// and never a file under the final name.
+#pragma once
+
+#include "protocols/runner.hpp"
+#include "sim/integrate/step_log.hpp"
+#include "sim/mesh/mesh.hpp"
+
+#include <optional>
+
+namespace crumple {
+
+struct RunMeta {
+  std::string program_version, git_revision, start_time, end_time, status = "running";
+  std::uint64_t seed = 0;
+  int threads = 1;
+  double ks = 0, kb = 0, mass = 0, h_eff = 0, length_unit_m = 1.0;
+};
+
+struct FrameRecord {
+  State state;
+  std::string stage;
+  int cycle = 0;
+  long step = 0;
+};
+
+struct CycleRecord {
+  int cycle = 0;
+  double t = 0;
+  VecX x, p;
+  std::vector<std::uint8_t> crease_mask;
+  double crease_threshold = 0;
+};
+
+struct RunRecord {
+  RunMeta meta;
+  std::string config;  ///< resolved YAML
+  Mesh mesh;
+  std::vector<FrameRecord> frames;
+  std::vector<CycleRecord> cycles;
+  std::vector<LogRow> log;
+  std::optional<Checkpoint> checkpoint;
+};
+
+/// Writes the whole record to `path` (overwriting).
+void write_run_file(const std::string& path, const RunRecord& r);
+/// Reads a run file back (resume, tests). Throws InputError naming the file on any problem.
+RunRecord read_run_file(const std::string& path);
+/// Writes PATH atomically: to PATH.new, then renamed.
+void write_run_file_atomic(const std::string& path, const RunRecord& r);
+/// The XDMF sidecar for ParaView: a temporal collection of the frames of `h5_name`.
+void write_xdmf(const std::string& xdmf_path, const std::string& h5_name, const RunRecord& r);
+
+}  // namespace crumple
