@@ -50,8 +50,7 @@ class Section {
  public:
   Section(const YAML::Node& root, const std::string& name, const Context& ctx,
           std::vector<std::string> keys)
-      : name_(name), ctx_(ctx) {
-    node_ = root[name];
+      : name_(name), ctx_(ctx), node_(root[name]) {  // copy: assigning a missing key throws
     if (!node_.IsDefined() || node_.IsNull()) return;
     if (!node_.IsMap()) ctx_.fail(node_, name, "expected a map of keys, got " + scalar_text(node_));
     for (auto it = node_.begin(); it != node_.end(); ++it) {

@@ -1,0 +1,117 @@
+// The crumple-sim binary: bad input exits 2 with the message and writes nothing; a run killed
+// with SIGKILL and resumed gives the uninterrupted result; no final file exists before the end.
+#include "sim/io/run_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using namespace crumple;
+
+namespace {
+const fs::path kDir = fs::temp_directory_path() / "crumple_cli_test";
+
+struct Result {
+  int code;
+  std::string err;
+};
+Result sim(const std::string& args) {
+  fs::create_directories(kDir);
+  const fs::path err = kDir / "stderr.txt";
+  const std::string cmd = std::string(CRUMPLE_SIM) + " " + args + " 2> " + err.string() + " > /dev/null";
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(err);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
+}
+fs::path write(const std::string& name, const std::string& text) {
+  fs::create_directories(kDir);
+  const fs::path p = kDir / name;
+  std::ofstream(p) << text;
+  return p;
+}
+const char* kTiny = R"(mesh: {nodes: 120, seed: 4}
+integrator: {plastic_c0: 0.3}
+protocol:
+  cycles: 2
+  stages:
+    - {type: roll, duration: 0.2}
+    - {type: compress, compaction: 0.5, speed: 0.3}
+output: {dt: 0.05, checkpoint_wall_s: 0}
+)";
+}  // namespace
+
+TEST(Cli, BadInputExitsTwoAndWritesNothing) {
+  const fs::path out = kDir / "bad.h5";
+  struct Case {
+    std::string yaml, args, expect;
+  };
+  const std::vector<Case> cases = {
+      {"mesh: {nodez: 3}\n", "", ":1:8: mesh.nodez: unknown key"},
+      {"mesh: {nodes: abc}\n", "", "mesh.nodes: expected a whole number"},
+      {"material: {thickness: -1}\n", "", "material.thickness: must be > 0"},
+      {"protocol: {stages: [{type: squash}]}\n", "", "unknown stage type 'squash'"},
+      {"protocol: {stages: [{type: compress, speed: 1}]}\n", "", "compaction: missing required"},
+      {"protocol: {stages: [{type: compress, compaction: 0.3, speed: -1}]}\n", "", "speed: must be > 0"},
+      {"mesh: [1, 2\n", "", "YAML syntax error"},
+      {"protocol: {stages: [{type: release}]}\n", "--set mesh.nodes=zero", "--set mesh.nodes=zero"},
+  };
+  for (const auto& c : cases) {
+    const fs::path cfg = write("bad.yaml", c.yaml);
+    const Result r = sim(cfg.string() + " -o " + out.string() + " " + c.args);
+    SCOPED_TRACE(c.yaml);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(cfg.string()) == std::string::npos && c.args.empty(), true) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(out.string() + ".tmp"));
+  }
+  const Result missing = sim("no/such.yaml -o " + out.string());
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("no/such.yaml: cannot open"), std::string::npos);
+  EXPECT_EQ(sim("--list-stages").code, 0);
+}
+
+TEST(Cli, KilledRunResumesToTheUninterruptedResult) {
+  const fs::path cfg = write("tiny.yaml", kTiny);
+  const fs::path whole = kDir / "whole.h5", killed = kDir / "killed.h5";
+  for (const auto& p : {whole, killed}) {
+    fs::remove(p);
+    fs::remove(p.string() + ".tmp");
+  }
+  ASSERT_EQ(sim(cfg.string() + " -o " + whole.string() + " --threads 1 --quiet").code, 0);
+
+  // Start the same run and SIGKILL it once it has written a checkpoint.
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execl(CRUMPLE_SIM, CRUMPLE_SIM, cfg.c_str(), "-o", killed.c_str(), "--threads", "1", "--quiet",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const fs::path tmp = killed.string() + ".tmp";
+  for (int i = 0; i < 2000 && !fs::exists(tmp); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, SIGKILL);  // the .tmp appears (atomically) only with a checkpoint in it
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before it could be killed";
+  EXPECT_FALSE(fs::exists(killed)) << "a final file exists before completion";
+  ASSERT_TRUE(fs::exists(tmp));
+
+  const Result r = sim(cfg.string() + " -o " + killed.string() + " --threads 1 --quiet --resume");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(tmp));
+  const RunRecord a = read_run_file(whole.string()), b = read_run_file(killed.string());
+  ASSERT_TRUE(a.checkpoint && b.checkpoint);
+  EXPECT_EQ(a.checkpoint->state.t, b.checkpoint->state.t);
+  EXPECT_EQ(a.checkpoint->state.x, b.checkpoint->state.x);
+  EXPECT_EQ(a.checkpoint->state.p, b.checkpoint->state.p);
+  EXPECT_EQ(a.frames.size(), b.frames.size());
+  EXPECT_EQ(b.meta.status, "complete");
+}

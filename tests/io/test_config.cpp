@@ -1,0 +1,104 @@
+// Configuration: every class of bad input names file:line:column and the key; defaults and
+// the resolved YAML round trip; the units mapping of eq. 5-7.
+#include "sim/core/errors.hpp"
+#include "sim/io/config.hpp"
+#include "sim/io/units.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace crumple;
+
+namespace {
+std::string error_of(const std::string& yaml, const std::vector<std::string>& sets = {}) {
+  try {
+    load_config_text(yaml, "c.yaml", sets);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+bool starts(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
+}  // namespace
+
+TEST(Config, UnknownKeyListsTheValidOnes) {
+  const std::string e = error_of("mesh:\n  nodez: 10\n");
+  EXPECT_TRUE(starts(e, "c.yaml:2:3: mesh.nodez: unknown key (valid: shape, nodes")) << e;
+  EXPECT_TRUE(starts(error_of("meshes: {}\n"), "c.yaml:1:1: meshes: unknown section")) << error_of("meshes: {}\n");
+}
+
+TEST(Config, WrongType) {
+  const std::string e = error_of("mesh:\n  nodes: many\n");
+  EXPECT_TRUE(starts(e, "c.yaml:2:10: mesh.nodes: expected a whole number, got 'many'")) << e;
+  EXPECT_TRUE(starts(error_of("output:\n  xdmf: perhaps\n"), "c.yaml:2:9: output.xdmf: expected true or false"));
+}
+
+TEST(Config, OutOfRange) {
+  const std::string e = error_of("material:\n  thickness: -3\n");
+  EXPECT_TRUE(starts(e, "c.yaml:2:14: material.thickness: must be > 0, got -3")) << e;
+  EXPECT_TRUE(starts(error_of("integrator:\n  bdf_order: 5\n"), "c.yaml:2:14: integrator.bdf_order: must be between 1 and 4"));
+}
+
+TEST(Config, UnknownChoiceListsTheValidOnes) {
+  const std::string e = error_of("integrator:\n  linear_solver: magic\n");
+  EXPECT_TRUE(starts(e, "c.yaml:2:18: integrator.linear_solver: unknown value 'magic'")) << e;
+  EXPECT_NE(e.find("block_jacobi"), std::string::npos);
+}
+
+TEST(Config, SyntaxError) {
+  const std::string e = error_of("mesh:\n  nodes: [1, 2\n");
+  EXPECT_TRUE(starts(e, "c.yaml:")) << e;
+  EXPECT_NE(e.find("YAML syntax error"), std::string::npos) << e;
+}
+
+TEST(Config, MissingFile) {
+  try {
+    load_config("no/such/file.yaml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(starts(e.what(), "no/such/file.yaml: cannot open")) << e.what();
+  }
+}
+
+TEST(Config, OverridesAndTheirErrors) {
+  const Params p = load_config_text("mesh:\n  nodes: 500\n", "c.yaml", {"mesh.nodes=800", "protocol.cycles=3"});
+  EXPECT_EQ(p.mesh.nodes, 800);
+  EXPECT_EQ(p.protocol.cycles, 3);
+  EXPECT_TRUE(starts(error_of("", {"mesh.nodes=-5"}), "--set mesh.nodes=-5: mesh.nodes: must be between"))
+      << error_of("", {"mesh.nodes=-5"});
+  EXPECT_TRUE(starts(error_of("", {"mesh.nodez=5"}), "--set mesh.nodez=5: mesh.nodez: unknown key"));
+  EXPECT_TRUE(starts(error_of("", {"nodes"}), "--set nodes: expected dotted.key=value"));
+}
+
+TEST(Config, DirectConstantsComeTogether) {
+  const std::string e = error_of("material:\n  ks: 1\n  kb: 2\n");
+  EXPECT_NE(e.find("material.mass: ks, kb and mass are given together"), std::string::npos) << e;
+}
+
+TEST(Config, ResolvedYamlRoundTrips) {
+  const Params p = load_config_text(
+      "mesh: {shape: disk, nodes: 777, size: 0.3}\nintegrator: {rtol: 3.3e-5, linear_solver: cg}\n"
+      "protocol:\n  cycles: 2\n  stages:\n    - {type: roll, duration: 0.1}\n",
+      "c.yaml");
+  const std::string y1 = resolved_yaml(p);
+  const Params q = load_config_text(y1, "resolved");
+  EXPECT_EQ(resolved_yaml(q), y1);
+  EXPECT_EQ(q.mesh.nodes, 777);
+  EXPECT_EQ(q.integrator.rtol, 3.3e-5);
+  EXPECT_EQ(q.protocol.stages[0]["duration"].as<double>(), 0.1);
+}
+
+TEST(Units, PhysicalMaterialMapsToTheModel) {
+  MaterialParams m;
+  m.thickness = 2.5e-4;
+  m.young_modulus = 1e9;
+  m.density = 1400;
+  m.mass_scale = 1;
+  const ResolvedMaterial r = resolve_material(m, 0.01, 1000);
+  EXPECT_NEAR(r.h_eff, 2.5e-4, 1e-15);                                   // eq. 7
+  EXPECT_NEAR(r.y2d, 1e9 * 2.5e-4, 1e-6);                                // Y = Y2D / h
+  EXPECT_NEAR(r.kappa, 1e9 * std::pow(2.5e-4, 3) / (12 * (1 - 1.0 / 9)), 1e-15);  // eq. 5
+  EXPECT_NEAR(r.model.mass, 1400 * 2.5e-4 * 0.01 / 1000, 1e-20);
+  EXPECT_NEAR(r.model.b_iso, 0.01 * std::sqrt(r.model.ks * r.model.mass), 1e-18);
+}

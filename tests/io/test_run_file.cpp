@@ -1,0 +1,76 @@
+// The run file: an exact HDF5 round trip of mesh, frames, cycles, log, meta and checkpoint.
+#include "sim/io/run_file.hpp"
+#include "tests/support/grid_mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+
+using namespace crumple;
+
+TEST(RunFile, RoundTripIsExact) {
+  RunRecord r;
+  r.mesh = crumple::testing::grid_mesh(5, 4, 0.1, 0.08, 0.2, 3);
+  r.config = "mesh: {nodes: 20}\n";
+  r.meta.program_version = "9.9";
+  r.meta.git_revision = "abc";
+  r.meta.seed = 1234567890123ULL;
+  r.meta.ks = 1.5, r.meta.kb = 2.5e-3, r.meta.mass = 1e-7, r.meta.h_eff = 2.5e-4;
+  std::mt19937_64 rng(1);
+  std::normal_distribution<double> N;
+  auto random_vec = [&](Index n) {
+    VecX v(n);
+    for (Index k = 0; k < n; ++k) v[k] = N(rng);
+    return v;
+  };
+  const Index n3 = 3 * r.mesh.num_nodes(), nh = r.mesh.num_hinges();
+  for (int k = 0; k < 3; ++k) r.frames.push_back({State{random_vec(n3), random_vec(n3), random_vec(nh), 0.1 * k}, "roll", 1, 10L * k});
+  CycleRecord c{1, 2.5, random_vec(n3), random_vec(nh), std::vector<std::uint8_t>(nh, 1), 0.05};
+  r.cycles.push_back(c);
+  LogRow row;
+  row.t = 0.3, row.h = 1e-3, row.mode = 1, row.newton_iters = 2, row.cg_iters = 40, row.e_bend = 7;
+  r.log = {row, row};
+  Checkpoint ck;
+  ck.cycle = 2, ck.stage = 1, ck.in_stage = true, ck.stage_t_begin = 1.25;
+  ck.state = r.frames[1].state;
+  ck.stage_begin = r.frames[0].state;
+  ck.rng_at_stage_begin = "1 2 3";
+  ck.stepper = {1, 2, 3.5};
+  ck.apparatus.rolled = true, ck.apparatus.radius = 0.0177, ck.apparatus.axis_dir = Vec3(0, 1, 0);
+  r.checkpoint = ck;
+
+  const std::string path = (std::filesystem::temp_directory_path() / "crumple_roundtrip.h5").string();
+  write_run_file_atomic(path, r);
+  const RunRecord q = read_run_file(path);
+  std::filesystem::remove(path);
+
+  EXPECT_EQ(q.config, r.config);
+  EXPECT_EQ(q.meta.seed, r.meta.seed);
+  EXPECT_EQ(q.meta.git_revision, "abc");
+  EXPECT_EQ(q.meta.kb, 2.5e-3);
+  EXPECT_EQ(q.mesh.ref, r.mesh.ref);
+  EXPECT_EQ(q.mesh.triangles, r.mesh.triangles);
+  EXPECT_EQ(q.mesh.num_hinges(), r.mesh.num_hinges());
+  ASSERT_EQ(q.frames.size(), 3u);
+  EXPECT_EQ(q.frames[2].state.x, r.frames[2].state.x);
+  EXPECT_EQ(q.frames[2].state.p, r.frames[2].state.p);
+  EXPECT_EQ(q.frames[2].state.t, r.frames[2].state.t);
+  EXPECT_EQ(q.frames[2].step, 20);
+  ASSERT_EQ(q.cycles.size(), 1u);
+  EXPECT_EQ(q.cycles[0].p, c.p);
+  EXPECT_EQ(q.cycles[0].crease_mask, c.crease_mask);
+  ASSERT_EQ(q.log.size(), 2u);
+  EXPECT_EQ(q.log[1].cg_iters, 40);
+  EXPECT_EQ(q.log[1].e_bend, 7);
+  ASSERT_TRUE(q.checkpoint.has_value());
+  EXPECT_EQ(q.checkpoint->stage_begin.x, ck.stage_begin.x);
+  EXPECT_EQ(q.checkpoint->stepper, ck.stepper);
+  EXPECT_EQ(q.checkpoint->apparatus.radius, 0.0177);
+  EXPECT_EQ(q.checkpoint->rng_at_stage_begin, "1 2 3");
+}
+
+TEST(RunFile, UnreadableFileIsBadInput) {
+  EXPECT_THROW(read_run_file("no/such/run.h5"), InputError);
+  EXPECT_THROW(read_run_file("README.md"), InputError);
+}
