@@ -1,6 +1,51 @@
-# make reproduce: deps -> build -> runs -> analysis -> report. Until the pipeline issue lands
-# this is a small demo: one run of the default config that writes an output file.
+# make reproduce: deps -> build -> runs -> analysis -> ensemble statistics -> results/REPORT.md.
+#
+# Every run is a file target (runs/PRESET/seedS.h5), so `make -j` runs seeds in parallel, a
+# finished run is never redone, and a killed run (its RUN.h5.tmp holds a checkpoint) resumes.
+#   make reproduce PRESET=tiny|quick|paper SEEDS="1 2 3" PROTOCOL=protocols/other.yaml
+PRESET_FILE := pipeline/presets/$(PRESET).mk
+ifeq ($(wildcard $(PRESET_FILE)),)
+$(error unknown PRESET '$(PRESET)': choose one of $(notdir $(basename $(wildcard pipeline/presets/*.mk))))
+endif
+include $(PRESET_FILE)
+
+SEEDS_USED := $(if $(filter command line environment,$(origin SEEDS)),$(SEEDS),$(PRESET_SEEDS))
+PROTO_NAME := $(basename $(notdir $(PROTOCOL)))
+RUNDIR     := runs/$(PRESET)/$(PROTO_NAME)
+RESULTS    ?= results
+SIM        := $(BUILD)/sim/apps/crumple-sim
+ANALYZE    := $(BUILD)/analysis/apps/crumple-analyze
+PYTHON     := /usr/bin/python3
+RUN_THREADS ?= 1
+
+RUNS  := $(foreach s,$(SEEDS_USED),$(RUNDIR)/seed$(s).h5)
+STATS := $(foreach s,$(SEEDS_USED),$(RUNDIR)/seed$(s).analysis/stats.json)
+
+.PHONY: reproduce report runs analysis
+.SECONDARY: $(RUNS) $(STATS)
+
+# The build must finish before the runs start; the runs then go in parallel.
 reproduce: build
-	mkdir -p runs
-	$(BUILD)/sim/apps/crumple-sim protocols/demo.yaml -o runs/demo.h5
-	@echo "wrote runs/demo.h5"
+	$(MAKE) --no-print-directory -j $(JOBS) report PRESET=$(PRESET) SEEDS="$(SEEDS_USED)" \
+	  PROTOCOL=$(PROTOCOL) BUILD=$(BUILD)
+	@echo "report: $(RESULTS)/REPORT.md"
+
+runs: $(RUNS)
+analysis: $(STATS)
+report: $(RESULTS)/REPORT.md
+
+$(RUNDIR)/seed%.h5: $(PROTOCOL) $(PRESET_FILE)
+	@mkdir -p $(RUNDIR)
+	$(SIM) $(PROTOCOL) -o $@ --seed $* --threads $(RUN_THREADS) $(PRESET_SETS) \
+	  $(if $(wildcard $@.tmp),--resume,)
+
+$(RUNDIR)/seed%.analysis/stats.json: $(RUNDIR)/seed%.h5
+	$(ANALYZE) $< -o $(RUNDIR)/seed$*.analysis
+
+$(RESULTS)/REPORT.md: $(STATS) $(wildcard pipeline/plots/*.py pipeline/report/*.py)
+	@mkdir -p $(RESULTS)
+	$(PYTHON) pipeline/plots/ensemble.py -o $(RESULTS)/ensemble.json $(STATS)
+	$(PYTHON) pipeline/plots/plot_crease_length.py $(RESULTS)/ensemble.json -o $(RESULTS)/crease_length.png
+	$(PYTHON) pipeline/plots/plot_facets.py $(RESULTS)/ensemble.json -o $(RESULTS)/facets.png
+	$(PYTHON) pipeline/report/make_report.py --ensemble $(RESULTS)/ensemble.json \
+	  --runs $(dir $(firstword $(STATS))) --preset $(PRESET) --protocol $(PROTOCOL) -o $@
