@@ -1,0 +1,214 @@
+// Self-contact force term (contact_term.hpp; paper eq. 10-12, B.8-B.10).
+#include "sim/contact/contact_term.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+
+namespace crumple {
+
+namespace {
+
+std::uint64_t pair_key(Index a, Index b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+}
+
+}  // namespace
+
+ContactTerm::ContactTerm(const Mesh& mesh, const ContactSettings& settings)
+    : mesh_(&mesh), settings_(settings) {
+  if (!(settings.sigma > 0.0)) throw std::invalid_argument("ContactTerm: sigma must be positive");
+  if (settings.skin < 0.0) throw std::invalid_argument("ContactTerm: skin must be >= 0");
+  if (settings_.level < 0) settings_.level = auto_refinement(mesh, settings.sigma);
+  law_.ks = settings.ks;
+  law_.sigma = settings.sigma;
+  sites_ = build_contact_sites(mesh, settings_.level);
+}
+
+Vec3 ContactTerm::site_position(const VecX& x, Index s) const {
+  const ContactSite& c = sites_.sites[s];
+  Vec3 p = c.weights[0] * node(x, c.nodes[0]);
+  for (int k = 1; k < c.count; ++k) p += c.weights[k] * node(x, c.nodes[k]);
+  return p;
+}
+
+Index ContactTerm::role_node(Index p, int r) const {
+  return r < 3 ? sites_.sites[cand_[p][0]].nodes[r] : sites_.sites[cand_[p][1]].nodes[r - 3];
+}
+
+double ContactTerm::role_coef(Index p, int r) const {
+  return r < 3 ? sites_.sites[cand_[p][0]].weights[r] : -sites_.sites[cand_[p][1]].weights[r - 3];
+}
+
+bool ContactTerm::stale(const VecX& x) const {
+  if (x_search_.size() != x.size() || settings_.skin <= 0.0) return true;
+  const double lim2 = 0.25 * settings_.skin * settings_.skin * law_.sigma * law_.sigma;
+  const Index n = static_cast<Index>(x.size() / 3);
+  int moved = 0;
+#pragma omp parallel for schedule(static) reduction(| : moved)
+  for (Index i = 0; i < n; ++i)
+    if ((node(x, i) - node(x_search_, i)).squaredNorm() > lim2) moved = 1;
+  return moved != 0;
+}
+
+bool ContactTerm::update(const VecX& x) {
+  ++stats_.updates;
+  if (!stale(x)) return false;
+  const std::vector<std::uint64_t> old = std::move(cross_);
+  search(x);
+  const bool changed = old != cross_;
+  if (changed) {
+    ++version_;
+    ++stats_.pattern_changes;
+  }
+  return changed;
+}
+
+void ContactTerm::search(const VecX& x) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Eigen::Matrix3Xd pos;
+  sites_.positions(x, pos);
+  ContactPairs found = find_pairs(pos, law_.sigma * (1.0 + settings_.skin), &sites_);
+  cand_ = std::move(found.pairs);
+  stats_.last = found.stats;
+  x_search_ = x;
+
+  // Node -> (pair, role) CSR, filled in pair order so that gathers are deterministic.
+  const Index n = mesh_->num_nodes();
+  const Index m = static_cast<Index>(cand_.size());
+  std::vector<int> count(n + 1, 0);
+  for (Index p = 0; p < m; ++p)
+    for (int side = 0; side < 2; ++side) {
+      const ContactSite& s = sites_.sites[cand_[p][side]];
+      for (int k = 0; k < s.count; ++k) ++count[s.nodes[k] + 1];
+    }
+  rows_.clear();
+  row_start_.assign(1, 0);
+  std::vector<int> row_of(n, -1);
+  for (Index i = 0; i < n; ++i)
+    if (count[i + 1] > 0) {
+      row_of[i] = static_cast<int>(rows_.size());
+      rows_.push_back(i);
+      row_start_.push_back(row_start_.back() + count[i + 1]);
+    }
+  entries_.resize(row_start_.back());
+  std::vector<int> fill(row_start_.begin(), row_start_.end() - 1);
+  for (Index p = 0; p < m; ++p)
+    for (int r = 0; r < 6; ++r) {
+      const ContactSite& s = sites_.sites[cand_[p][r / 3]];
+      if (r % 3 >= s.count) continue;
+      entries_[fill[row_of[s.nodes[r % 3]]]++] = p * 8 + r;
+    }
+
+  // The node pairs coupled across each candidate pair, for the pattern and change detection.
+  cross_.clear();
+  cross_.reserve(9 * static_cast<std::size_t>(m));
+  for (Index p = 0; p < m; ++p) {
+    const ContactSite& a = sites_.sites[cand_[p][0]];
+    const ContactSite& b = sites_.sites[cand_[p][1]];
+    for (int i = 0; i < a.count; ++i)
+      for (int j = 0; j < b.count; ++j) cross_.push_back(pair_key(a.nodes[i], b.nodes[j]));
+  }
+  std::sort(cross_.begin(), cross_.end());
+  cross_.erase(std::unique(cross_.begin(), cross_.end()), cross_.end());
+
+  ++stats_.searches;
+  stats_.search_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Index ContactTerm::num_active(const VecX& x) const {
+  const Index m = static_cast<Index>(cand_.size());
+  Index active = 0;
+#pragma omp parallel for schedule(static) reduction(+ : active)
+  for (Index p = 0; p < m; ++p) {
+    double rho;
+    if (law_.in_range((site_position(x, cand_[p][0]) - site_position(x, cand_[p][1])).norm(), rho))
+      ++active;
+  }
+  return active;
+}
+
+double ContactTerm::energy(const State& s) const {
+  const Index m = static_cast<Index>(cand_.size());
+  double e = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : e)
+  for (Index p = 0; p < m; ++p)
+    e += law_.energy((site_position(s.x, cand_[p][0]) - site_position(s.x, cand_[p][1])).norm());
+  return e;
+}
+
+void ContactTerm::add_force(const State& s, VecX& f) const {
+  const Index m = static_cast<Index>(cand_.size());
+  std::vector<Vec3> F1(m);
+#pragma omp parallel for schedule(static)
+  for (Index p = 0; p < m; ++p)
+    F1[p] = law_.force(site_position(s.x, cand_[p][0]) - site_position(s.x, cand_[p][1]));
+  const Index nrows = static_cast<Index>(rows_.size());
+#pragma omp parallel for schedule(dynamic, 64)
+  for (Index k = 0; k < nrows; ++k) {
+    Vec3 fa = Vec3::Zero();
+    for (int e = row_start_[k]; e < row_start_[k + 1]; ++e) {
+      const Index p = entries_[e] / 8;
+      fa += role_coef(p, entries_[e] % 8) * F1[p];
+    }
+    f.segment<3>(3 * rows_[k]) += fa;
+  }
+}
+
+void ContactTerm::add_jacobians(const State& s, Jacobians& J) const {
+  const Index m = static_cast<Index>(cand_.size());
+  if (m == 0) return;
+  if (!pattern_) throw std::logic_error("ContactTerm::add_jacobians: bind() a pattern first");
+  std::vector<Mat3> K(m);
+  std::vector<char> active(m);
+#pragma omp parallel for schedule(static)
+  for (Index p = 0; p < m; ++p) {
+    const Vec3 r = site_position(s.x, cand_[p][0]) - site_position(s.x, cand_[p][1]);
+    double rho;
+    active[p] = law_.in_range(r.norm(), rho);
+    if (active[p]) K[p] = law_.stiffness(r);
+  }
+  double* val = J.Hx.valuePtr();
+  const BlockPattern& pat = *pattern_;
+  std::atomic<bool> missing{false};
+  const Index nrows = static_cast<Index>(rows_.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (Index k = 0; k < nrows; ++k) {
+    const Index a = rows_[k];
+    for (int e = row_start_[k]; e < row_start_[k + 1]; ++e) {
+      const Index p = entries_[e] / 8;
+      if (!active[p]) continue;
+      const double ca = role_coef(p, entries_[e] % 8);
+      for (int r = 0; r < 6; ++r) {
+        const ContactSite& site = sites_.sites[cand_[p][r / 3]];
+        if (r % 3 >= site.count) continue;
+        try {
+          add_block(val, pat.slot(a, site.nodes[r % 3]), (ca * role_coef(p, r)) * K[p]);
+        } catch (const std::out_of_range&) {
+          missing = true;
+        }
+      }
+    }
+  }
+  if (missing)
+    throw std::logic_error("ContactTerm::add_jacobians: pattern lacks contact blocks; rebuild it "
+                           "after update()");
+}
+
+void ContactTerm::coupled_pairs(std::vector<std::pair<Index, Index>>& out) const {
+  for (const auto& e : mesh_->edges) out.emplace_back(e[0], e[1]);
+  for (std::uint64_t key : cross_)
+    out.emplace_back(static_cast<Index>(key >> 32), static_cast<Index>(key & 0xffffffffu));
+}
+
+void ContactTerm::bind(const BlockPattern& pattern) {
+  for (std::uint64_t key : cross_)
+    if (!pattern.contains(static_cast<Index>(key >> 32), static_cast<Index>(key & 0xffffffffu)))
+      throw std::logic_error("ContactTerm::bind: pattern lacks a contact block");
+  pattern_ = &pattern;
+}
+
+}  // namespace crumple

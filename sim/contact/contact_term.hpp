@@ -1,0 +1,96 @@
+// Self-contact as a force term (paper §2.4, eq. 10-12; Appendix B.3, B.8-B.10).
+//
+// The sheet's contact sites (contact_sites.hpp) repel pairwise with the law of
+// contact_potential.hpp; each site's force is spread over its triangle's nodes with the
+// barycentric weights. The term keeps a candidate list of site pairs closer than
+// sigma (1 + skin) at the last search (pair_search.hpp), and evaluates energy, force and
+// Jacobian on that list, counting only pairs closer than sigma at the state given. The list is
+// valid while no node has moved more than skin sigma / 2 since the search: a pair closer than
+// sigma now was then closer than sigma + skin sigma. update(x) re-searches only when that is
+// violated, so the candidate list, and with it the Jacobian pattern, changes rarely.
+//
+// Usage: construct, call update(x) before evaluating at x (and again whenever x has moved;
+// stale(x) tells whether it must), rebuild the BlockPattern when update() returns true (or
+// pattern_version() changed), bind(pattern), then energy / add_force / add_jacobians.
+//
+// Assembly is lock-free and deterministic: per-pair forces and 3x3 blocks are computed in
+// parallel, then each node gathers the contributions of its pairs in pair order (a CSR from
+// nodes to pair stencils built at each search), so every matrix row and force entry is written
+// by one thread, in an order that does not depend on the number of threads.
+#pragma once
+
+#include "sim/contact/contact_potential.hpp"
+#include "sim/contact/contact_sites.hpp"
+#include "sim/contact/pair_search.hpp"
+#include "sim/model/force_term.hpp"
+
+namespace crumple {
+
+struct ContactSettings {
+  double ks = 1.0;     ///< contact stiffness (eq. 10; the paper uses the spring constant ks)
+  double sigma = 0.0;  ///< interaction range (paper: h_eff = sqrt(8 kb / ks)); must be > 0
+  int level = -1;      ///< site refinement 0..3; -1 picks auto_refinement(mesh, sigma)
+  double skin = 0.3;   ///< candidate-list skin as a fraction of sigma; 0 re-searches every update
+};
+
+/// Counters for reporting the cost of contact handling.
+struct ContactStats {
+  std::size_t updates = 0;      ///< calls to update()
+  std::size_t searches = 0;     ///< grid searches run
+  std::size_t pattern_changes = 0;
+  double search_seconds = 0;    ///< wall time in searches (grid + bookkeeping)
+  SearchStats last;             ///< the last search's grid figures
+};
+
+class ContactTerm : public ForceTerm {
+ public:
+  /// Keeps a reference to mesh (it must outlive the term).
+  ContactTerm(const Mesh& mesh, const ContactSettings& settings);
+
+  std::string name() const override { return "contact"; }
+  double energy(const State& s) const override;
+  void add_force(const State& s, VecX& f) const override;
+  void add_jacobians(const State& s, Jacobians& J) const override;
+  /// Every mesh edge (blocks within one site) and every node pair across a candidate pair.
+  void coupled_pairs(std::vector<std::pair<Index, Index>>& out) const override;
+  /// Remembers the pattern (it must stay alive while bound) and checks that it holds all blocks.
+  void bind(const BlockPattern& pattern) override;
+  std::uint64_t pattern_version() const override { return version_; }
+
+  /// Refreshes the candidate list for positions x (3n) if needed. Returns true iff the set of
+  /// coupled node pairs changed (the caller then rebuilds the pattern).
+  bool update(const VecX& x);
+  /// True when x is too far from the last search for the candidate list to be trusted.
+  bool stale(const VecX& x) const;
+
+  const ContactSettings& settings() const { return settings_; }
+  const ContactLaw& law() const { return law_; }
+  const ContactSites& sites() const { return sites_; }
+  const std::vector<SitePair>& candidates() const { return cand_; }
+  /// Candidate pairs closer than sigma at x.
+  Index num_active(const VecX& x) const;
+  const ContactStats& stats() const { return stats_; }
+
+ private:
+  void search(const VecX& x);
+  Vec3 site_position(const VecX& x, Index s) const;
+  // Pair p, stencil role r (0..2 site 1, 3..5 site 2): node and signed weight c_r.
+  Index role_node(Index p, int r) const;
+  double role_coef(Index p, int r) const;
+
+  const Mesh* mesh_;
+  ContactSettings settings_;
+  ContactLaw law_;
+  ContactSites sites_;
+  std::vector<SitePair> cand_;
+  VecX x_search_;                      // node positions at the last search (empty: none yet)
+  std::vector<Index> rows_;            // nodes touched by some candidate pair, ascending
+  std::vector<int> row_start_;         // CSR over rows_ into entries_
+  std::vector<int> entries_;           // pair * 8 + role, in pair order
+  std::vector<std::uint64_t> cross_;   // node pairs (a < b) across candidate pairs, sorted
+  const BlockPattern* pattern_ = nullptr;
+  std::uint64_t version_ = 0;
+  ContactStats stats_;
+};
+
+}  // namespace crumple
