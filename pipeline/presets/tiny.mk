@@ -1,3 +1,3 @@
 # Preset `tiny`: for CI, a few minutes end to end. Too coarse for physics; checks the plumbing.
 PRESET_SEEDS := 1 2
-PRESET_SETS := --set mesh.nodes=400 --set protocol.cycles=2 --set integrator.plastic_c0=0.3
+PRESET_SETS := --set mesh.nodes=300 --set protocol.cycles=2

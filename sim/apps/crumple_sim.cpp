@@ -7,6 +7,7 @@
 #include "protocols/integrator_stepper.hpp"
 #include "protocols/registry.hpp"
 #include "sim/apps/run_sink.hpp"
+#include "sim/contact/contact_term.hpp"
 #include "sim/io/config.hpp"
 #include "sim/io/units.hpp"
 #include "sim/mesh/generate.hpp"
@@ -96,7 +97,28 @@ int run(const Options& o) {
   }
 
   SheetModel model(mesh, mat.model);
+  // Self-contact (paper §2.4): range sigma = h_eff unless set, stiffness ks unless set; its
+  // candidate list is refreshed before every step; stages may switch it off (unfold).
+  std::shared_ptr<ContactTerm> contact;
+  bool contact_on = false;
+  if (p.contact.enabled) {
+    ContactSettings cs;
+    cs.ks = p.contact.stiffness > 0 ? p.contact.stiffness : mat.model.ks;
+    cs.sigma = p.contact.sigma > 0 ? p.contact.sigma : mat.h_eff;
+    cs.level = p.contact.refinement == "auto" ? -1 : std::stoi(p.contact.refinement);
+    cs.skin = p.contact.skin;
+    contact = std::make_shared<ContactTerm>(mesh, cs);
+    model.add_term(contact, TermKind::Contact);
+    contact_on = true;
+    if (!o.quiet)
+      std::fprintf(stderr, "  contact: sigma %.4g m, %d sites\n", cs.sigma,
+                   static_cast<int>(contact->sites().size()));
+  }
   Integrator integ(model, p.integrator);
+  if (contact)
+    integ.before_step = [&](const State& st) {
+      if (contact_on) contact->update(st.x);
+    };
   IntegratorStepper stepper(integ);
   SheetInfo info;
   info.size = p.mesh.size;
@@ -119,6 +141,18 @@ int run(const Options& o) {
       },
       static_cast<int>(stages.size()), info, rs);
 
+  if (contact)
+    runner.set_contact_switch(
+        [&](bool on) {
+          if (on == contact_on) return;
+          if (on) {
+            model.add_term(contact, TermKind::Contact);
+          } else {
+            model.remove_term(contact.get());
+          }
+          contact_on = on;
+        },
+        [&] { return contact_on; });
   FileSink sink(rec, tmp, integ, p.output.crease_threshold);
   State s = model.rest_state();
   const std::optional<Checkpoint> resume_from = rec.checkpoint;
