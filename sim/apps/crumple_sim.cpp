@@ -104,7 +104,14 @@ int run(const Options& o) {
   if (p.contact.enabled) {
     ContactSettings cs;
     cs.ks = p.contact.stiffness > 0 ? p.contact.stiffness : mat.model.ks;
-    cs.sigma = p.contact.sigma > 0 ? p.contact.sigma : mat.h_eff;
+    // sigma = h_eff (paper §2.4) unless the mesh is too coarse to resolve it: with site
+    // refinement capped at level 3 the sites are a quarter edge apart, and a range below that
+    // lets layers slip between sites, so the automatic range is at least a quarter edge.
+    const double quarter_edge = 0.25 * mesh.mean_edge_length();
+    cs.sigma = p.contact.sigma > 0 ? p.contact.sigma : std::max(mat.h_eff, quarter_edge);
+    if (p.contact.sigma <= 0 && quarter_edge > mat.h_eff && !o.quiet)
+      std::fprintf(stderr,
+                   "  contact: mesh too coarse to resolve h_eff; range raised to a quarter edge\n");
     cs.level = p.contact.refinement == "auto" ? -1 : std::stoi(p.contact.refinement);
     cs.skin = p.contact.skin;
     contact = std::make_shared<ContactTerm>(mesh, cs);
