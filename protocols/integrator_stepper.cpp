@@ -6,7 +6,7 @@
 namespace crumple {
 
 namespace {
-constexpr double kFormat = 1.0;  // bump when the layout below changes
+constexpr double kFormat = 2.0;  // bump when the layout below changes
 
 struct Reader {
   const std::vector<double>& d;
@@ -49,7 +49,8 @@ std::vector<double> flatten(const IntegratorHistory& h) {
   for (double v : {double(c.steps_implicit), double(c.steps_explicit), double(c.switches),
                    double(c.newton_iters), double(c.cg_iters), double(c.implicit_attempts),
                    double(c.rejected_error), double(c.rejected_newton), double(c.rejected_not_spd),
-                   double(c.rejected_other), c.wall_assembly, c.wall_linear, c.wall_total})
+                   double(c.rejected_other), c.wall_assembly, c.wall_linear, c.wall_total,
+                   c.wall_implicit, c.wall_explicit, c.wall_before_step})
     out.push_back(v);
   return out;
 }
@@ -77,6 +78,7 @@ IntegratorHistory unflatten_history(const std::vector<double>& data) {
   c.rejected_error = r.count(), c.rejected_newton = r.count(), c.rejected_not_spd = r.count();
   c.rejected_other = r.count();
   c.wall_assembly = r.next(), c.wall_linear = r.next(), c.wall_total = r.next();
+  c.wall_implicit = r.next(), c.wall_explicit = r.next(), c.wall_before_step = r.next();
   return h;
 }
 

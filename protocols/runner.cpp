@@ -179,6 +179,8 @@ bool ProtocolRunner::run(State& s, RunSink& sink, const Checkpoint* resume) {
       }
       stage->end(ctx);
       progress(*stage, ctx, k, true);
+      stage_wall_[stage->type()] +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - stage_wall_start_).count();
       stepper_.restart();
       if (k + 1 == num_stages_) {
         sink.cycle_end(c, s);

@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <functional>
+#include <map>
 
 namespace crumple {
 
@@ -81,6 +82,8 @@ class ProtocolRunner {
   /// t_max before the last cycle ended. Throws NumericalFailure (after a checkpoint) with the
   /// stage, cycle and time in the message.
   bool run(State& s, RunSink& sink, const Checkpoint* resume = nullptr);
+  /// Wall seconds spent in each stage type during run() (for the cycle benchmark).
+  const std::map<std::string, double>& stage_wall() const { return stage_wall_; }
 
  private:
   void progress(const Stage& stage, const StageContext& ctx, int k, bool force);
@@ -97,6 +100,7 @@ class ProtocolRunner {
   std::function<void(bool)> set_contact_ = [](bool) {};
   std::function<bool()> contact_on_ = [] { return false; };
   double next_frame_ = 0;
+  std::map<std::string, double> stage_wall_;
   std::chrono::steady_clock::time_point start_, last_progress_, stage_wall_start_;
 };
 

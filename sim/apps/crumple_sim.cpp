@@ -174,10 +174,15 @@ int run(const Options& o) {
     const fs::path out(o.output);
     write_xdmf(fs::path(out).replace_extension(".xdmf").string(), out.filename().string(), rec);
   }
-  if (!o.quiet)
+  if (!o.quiet) {
     std::fprintf(stderr, "crumple-sim: wrote %s (t = %g s, %zu frames, %zu cycles)\n%s",
                  o.output.c_str(), s.t, rec.frames.size(), rec.cycles.size(),
                  integ.summary().text().c_str());
+    std::string stages_line = "by stage:";
+    for (const auto& [type, wall] : runner.stage_wall())
+      stages_line += " " + type + " " + std::to_string(wall).substr(0, 8) + " s;";
+    std::fprintf(stderr, "%s\n", stages_line.c_str());
+  }
   return kExitOk;
 }
 

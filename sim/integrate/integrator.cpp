@@ -114,7 +114,9 @@ void Integrator::advance_to(State& s, double t_end) {
     double h = 0;
     for (;;) {
       if (before_step) {
+        const double wb = omp_get_wtime();
         before_step(s);
+        hist_.counters.wall_before_step += omp_get_wtime() - wb;
         hist_.fsal.resize(0);  // the callback may change the force terms
       }
       if (model_.rebuild_pattern()) newton_->bind();
@@ -123,11 +125,14 @@ void Integrator::advance_to(State& s, double t_end) {
       // Avoid a sliver of a last step: split the remainder in two instead.
       if (t_end - s.t > h && t_end - s.t < 1.5 * h) h = 0.5 * (t_end - s.t);
       a = Attempt{};
+      const double wa = omp_get_wtime();
       if (implicit) {
         ++hist_.counters.implicit_attempts;
         implicit_attempt(s, h, a);
+        hist_.counters.wall_implicit += omp_get_wtime() - wa;
       } else {
         explicit_attempt(s, h, a);
+        hist_.counters.wall_explicit += omp_get_wtime() - wa;
       }
       const double exponent = implicit ? 1.0 / (a.order + 1) : 0.25;
       if (a.ok && a.err <= 1.0) {

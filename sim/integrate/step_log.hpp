@@ -28,6 +28,9 @@ struct IntegratorSummary {
   double wall_assembly = 0;  ///< s: forces, Jacobians, reduced system
   double wall_linear = 0;    ///< s: preconditioner and CG / direct solve
   double wall_total = 0;     ///< s inside advance_to
+  double wall_implicit = 0;  ///< s in quasistatic (BDF) step attempts
+  double wall_explicit = 0;  ///< s in explicit (RK4) step attempts
+  double wall_before_step = 0;  ///< s in the before-step callback (contact updates)
 
   long steps() const { return steps_implicit + steps_explicit; }
   long rejections() const {
