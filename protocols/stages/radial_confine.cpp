@@ -1,11 +1,17 @@
 // Stage `radial_confine`: the paper's radial confinement (Fig. 5a): an inward force on every
 // node farther than a cutoff radius R(t) from the centre, R shrinking at `speed` for `duration`.
-// The force is that of a sphere wall (allowed inside) with zero range: U = k/3 (r - R)^3 for
-// r > R, which is C^2 at the cutoff.
+// The force is bounded, as the paper's "inward force" reads and as self-contact (whose force
+// per pair is bounded too) requires to hold the crumpled ball: it builds up smoothly to
+// `force` (in units of ks h_eff) over a penetration of `width` h_eff beyond the cutoff
+// (a sphere wall with the saturating profile of wall_term.hpp). A perfectly flat sheet under
+// in-plane load never leaves its plane, so the stage first gives every node a random normal
+// displacement of `perturbation` h_eff (from the run's random stream): the imperfection every
+// real sheet has.
 #include "protocols/stages/common.hpp"
 #include "protocols/terms/wall_term.hpp"
 
 #include <algorithm>
+#include <random>
 #include <sstream>
 
 namespace crumple::stages {
@@ -15,18 +21,24 @@ class RadialConfineStage : public Stage {
  public:
   explicit RadialConfineStage(const StageArgs& a)
       : radius_(a.number("radius")), speed_(a.number("speed")), duration_(a.number("duration")),
-        final_(a.number("final_radius")), stiffness_(a.number("stiffness")) {
+        final_(a.number("final_radius")), force_(a.number("force")), width_(a.number("width")),
+        perturbation_(a.number("perturbation")) {
     apply_common(*this, a);
   }
   std::string type() const override { return "radial_confine"; }
   void begin(StageContext& ctx) override {
     t0_ = ctx.t_begin;
+    std::normal_distribution<double> noise(0.0, perturbation_ * ctx.sheet.h_eff);
+    for (Index i = 0; i < ctx.model->num_nodes(); ++i) ctx.state->x[3 * i + 2] += noise(ctx.rng);
     const double r0 = radius_ > 0 ? radius_ : 0.5 * ctx.sheet.size;
     const Vec3 c = reference_centroid(ctx.model->mesh());
     wall_ = std::make_shared<SphereWall>(c, LinearMotion{r0, -speed_, t0_, final_}, true);
     const double h = ctx.sheet.h_eff;
-    own(ctx, std::make_shared<WallTerm>(wall_, ctx.model->num_nodes(),
-                                        stiffness_ * ctx.sheet.ks / h, 0.0));
+    WallProfile prof;
+    prof.kind = WallProfile::Kind::Saturating;
+    prof.f_max = force_ * ctx.sheet.ks * h;
+    prof.width = width_ * h;
+    own(ctx, std::make_shared<WallTerm>(wall_, ctx.model->num_nodes(), prof, 0.0));
   }
   bool done(StageContext& ctx) override { return ctx.state->t >= t0_ + duration_; }
   std::string progress(const StageContext& ctx) const override {
@@ -40,7 +52,7 @@ class RadialConfineStage : public Stage {
   }
 
  private:
-  double radius_, speed_, duration_, final_, stiffness_, t0_ = 0;
+  double radius_, speed_, duration_, final_, force_, width_, perturbation_, t0_ = 0;
   std::shared_ptr<SphereWall> wall_;
 };
 
@@ -56,8 +68,12 @@ StageType radial_confine_stage_type() {
       {"speed", K::Number, "0.01", "shrinking speed of the cutoff radius (length/s)", 0.0},
       {"duration", K::Number, "5", "duration of the stage (s)", 0.0, 1e30, true},
       {"final_radius", K::Number, "0", "the cutoff radius stops shrinking here", 0.0},
-      {"stiffness", K::Number, "0.1",
-       "k of U = k/3 (r-R)^3, in units of ks/h_eff", 0.0, 1e30, true},
+      {"force", K::Number, "0.2", "inward force per node beyond the cutoff, in units of ks h_eff",
+       0.0, 1e30, true},
+      {"perturbation", K::Number, "0.1",
+       "random normal displacement of the nodes at the start, in units of h_eff", 0.0},
+      {"width", K::Number, "4", "penetration over which the force builds up, in units of h_eff",
+       0.0, 1e30, true},
   };
   for (auto& p : common_params(1e30, 0.01)) t.params.push_back(p);
   t.make = [](const StageArgs& a) { return std::make_unique<RadialConfineStage>(a); };

@@ -1,12 +1,33 @@
 // One-sided wall potential on every node (wall_term.hpp).
 #include "protocols/terms/wall_term.hpp"
 
+#include <cmath>
 #include <limits>
 
 namespace crumple {
 
+void WallProfile::eval(double pen, double& U, double& F, double& dF) const {
+  if (kind == Kind::Cubic) {
+    U = k / 3.0 * pen * pen * pen;
+    F = k * pen * pen;
+    dF = 2.0 * k * pen;
+    return;
+  }
+  const double e = std::exp(-pen / width), g = 1.0 - e;
+  U = f_max * (pen - 2.0 * width * g + 0.5 * width * (1.0 - e * e));
+  F = f_max * g * g;
+  dF = 2.0 * f_max * g * e / width;
+}
+
 WallTerm::WallTerm(std::shared_ptr<const Wall> wall, Index num_nodes, double k, double range)
-    : wall_(std::move(wall)), n_(num_nodes), k_(k), range_(range) {}
+    : wall_(std::move(wall)), n_(num_nodes), range_(range) {
+  profile_.kind = WallProfile::Kind::Cubic;
+  profile_.k = k;
+}
+
+WallTerm::WallTerm(std::shared_ptr<const Wall> wall, Index num_nodes, WallProfile profile,
+                   double range)
+    : wall_(std::move(wall)), n_(num_nodes), profile_(profile), range_(range) {}
 
 double WallTerm::energy(const State& s) const {
   double e = 0.0;
@@ -17,8 +38,9 @@ double WallTerm::energy(const State& s) const {
     Mat3 H;
     wall_->distance(node(s.x, i), s.t, d, g, H);
     if (d < range_) {
-      const double pen = range_ - d;
-      e += k_ / 3.0 * pen * pen * pen;
+      double U, F, dF;
+      profile_.eval(range_ - d, U, F, dF);
+      e += U;
     }
   }
   return e;
@@ -32,8 +54,9 @@ void WallTerm::add_force(const State& s, VecX& f) const {
     Mat3 H;
     wall_->distance(node(s.x, i), s.t, d, g, H);
     if (d < range_) {
-      const double pen = range_ - d;
-      f.segment<3>(3 * i) += (k_ * pen * pen) * g;
+      double U, F, dF;
+      profile_.eval(range_ - d, U, F, dF);
+      f.segment<3>(3 * i) += F * g;
     }
   }
 }
@@ -47,9 +70,10 @@ void WallTerm::add_jacobians(const State& s, Jacobians& J) const {
     Mat3 H;
     wall_->distance(node(s.x, i), s.t, d, g, H);
     if (d < range_) {
-      const double pen = range_ - d;
-      // U' = -k pen^2, U'' = 2 k pen.
-      add_block(val, slots_[i], (2.0 * k_ * pen) * g * g.transpose() - (k_ * pen * pen) * H);
+      // F = -dU/dd, so Hx = dF/dpen grad d grad d^T - F Hess d.
+      double U, F, dF;
+      profile_.eval(range_ - d, U, F, dF);
+      add_block(val, slots_[i], dF * g * g.transpose() - F * H);
     }
   }
 }

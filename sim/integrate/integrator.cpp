@@ -159,6 +159,19 @@ void Integrator::advance_to(State& s, double t_end) {
         hn = h / 4.0;
         reason = a.failure;
       }
+      // A quasistatic step that fails (not SPD, Newton) even below the explicit step size
+      // cannot be rescued by shrinking h further (the indefinite part of Hv does not vanish
+      // as h -> 0 when springs are strongly compressed): hand over to the explicit mode, which
+      // needs no SPD matrix.
+      const double t_spring = std::sqrt(model_.params().mass / model_.params().ks);
+      if (implicit && !a.ok && hn < 0.2 * t_spring) {
+        hist_.mode = IntegrationMode::Explicit;
+        hist_.steps_in_mode = 0;
+        ++C.switches;
+        reset_history(s);
+        hist_.h = std::min(h, 0.2 * t_spring);
+        continue;
+      }
       if (h <= settings_.h_min * (1 + 1e-12) || hn < settings_.h_min) {
         std::ostringstream msg;
         msg << "integration failed at t = " << s.t << " with h = " << h << " (h_min "

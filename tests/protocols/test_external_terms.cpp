@@ -55,6 +55,26 @@ TEST(Walls, FiniteDifferences) {
   expect_wall_ok(std::make_shared<ConeWall>(Vec3(0, 0, -1.5), Vec3(0, 0, 1), 0.4, true), 0.3);
 }
 
+TEST(Walls, SaturatingProfileFiniteDifferences) {
+  const State s = cloud(4);
+  WallProfile prof;
+  prof.kind = WallProfile::Kind::Saturating;
+  prof.f_max = 2.0;
+  prof.width = 0.2;
+  WallTerm term(std::make_shared<SphereWall>(Vec3(0, 0, 0), LinearMotion{0.8, 0.0, 0.0}, true),
+                s.x.size() / 3, prof, 0.0);
+  const auto r = check_term(term, s, 0, 1e-7);
+  EXPECT_GT(r.force_norm, 0.0);
+  EXPECT_LE(r.force, 1e-6);
+  EXPECT_LE(r.hx, 1e-6);
+  double U, F, dF;
+  prof.eval(50.0, U, F, dF);
+  EXPECT_NEAR(F, 2.0, 1e-12);  // bounded
+  prof.eval(0.0, U, F, dF);
+  EXPECT_EQ(F, 0.0);
+  EXPECT_EQ(dF, 0.0);  // C^2 energy at the cutoff
+}
+
 TEST(Walls, PotentialIsOneSidedAndSmooth) {
   auto wall = std::make_shared<PlaneWall>(Vec3(0, 0, 0), Vec3(0, 0, 1));
   WallTerm term(wall, 1, 2.0, 0.1);
