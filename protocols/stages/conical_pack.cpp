@@ -32,9 +32,11 @@ class ConicalPackStage : public Stage {
                  std::make_shared<ConeWall>(Vec3(c.x(), c.y(), apex_z), Vec3::UnitZ(), angle_,
                                             true),
                  m.num_nodes(), stiffness_ * ctx.sheet.ks / h, h));
+    // At least 1.5 edges, so that coarse meshes still have a gripped centre.
+    const double grip_radius = std::max(grip_ * L, 1.5 * ctx.sheet.spacing);
     std::vector<Index> grip;
     for (Index i = 0; i < m.num_nodes(); ++i)
-      if ((m.ref.col(i) - c).norm() <= grip_ * L) grip.push_back(i);
+      if ((m.ref.col(i) - c).norm() <= grip_radius) grip.push_back(i);
     if (grip.empty()) throw InputError("conical_pack: grip radius holds no node; increase grip");
     Eigen::Matrix3Xd start(3, grip.size());
     for (std::size_t k = 0; k < grip.size(); ++k) start.col(k) = node(ctx.state->x, grip[k]);
@@ -74,7 +76,8 @@ StageType conical_pack_stage_type() {
       {"angle", K::Number, "30", "half-angle of the cone in degrees", 0.0, 89.0, true},
       {"speed", K::Number, "0.05", "pulling speed (length/s)", 0.0, 1e30, true},
       {"depth", K::Number, "0.4", "pull distance in units of the sheet size", 0.0, 1e30, true},
-      {"grip", K::Number, "0.05", "radius of the gripped centre, in units of the sheet size", 0.0,
+      {"grip", K::Number, "0.05",
+       "radius of the gripped centre, in units of the sheet size (at least 1.5 edges)", 0.0,
        0.5, true},
       {"stiffness", K::Number, "1", "cone wall stiffness in units of ks/h_eff", 0.0, 1e30, true},
   };
