@@ -27,9 +27,13 @@ double reference_acceleration(const StageContext& ctx) {
   return ctx.sheet.ks / (ctx.sheet.mass * lambda);
 }
 
-bool quiescent(const StageContext& ctx, double ratio, double speed) {
-  return ctx.max_speed() < speed * ctx.sheet.size &&
-         ctx.max_acceleration() < ratio * reference_acceleration(ctx);
+bool quiescent(const StageContext& ctx, double ratio, double speed, double* a_ratio,
+               double* speed_sizes) {
+  const double a = ctx.max_acceleration() / reference_acceleration(ctx);
+  const double v = ctx.max_speed() / ctx.sheet.size;
+  if (a_ratio) *a_ratio = a;
+  if (speed_sizes) *speed_sizes = v;
+  return a < ratio && v < speed;
 }
 
 Vec3 reference_centroid(const Mesh& mesh) { return mesh.ref.rowwise().mean(); }

@@ -14,7 +14,9 @@ void apply_common(Stage& stage, const StageArgs& args);
 /// a_ref = ks/(m lambda), lambda = sqrt(n/A) the linear node density (paper §3.4).
 /// Overdamped creep has tiny accelerations at finite speed, so quiescence also asks every node
 /// to move slower than `speed` sheet sizes per second.
-bool quiescent(const StageContext& ctx, double ratio, double speed);
+/// The two measures are returned through a_ratio and speed_sizes (for the progress line).
+bool quiescent(const StageContext& ctx, double ratio, double speed, double* a_ratio = nullptr,
+               double* speed_sizes = nullptr);
 double reference_acceleration(const StageContext& ctx);
 
 /// Centroid of the reference positions.

@@ -20,9 +20,7 @@ class ReleaseStage : public Stage {
   void begin(StageContext& ctx) override { t0_ = ctx.t_begin; }
   bool done(StageContext& ctx) override {
     if (ctx.state->t < t0_ + min_duration_) return false;
-    last_ratio_ = ctx.max_acceleration() / reference_acceleration(ctx);
-    last_speed_ = ctx.max_speed() / ctx.sheet.size;
-    return last_ratio_ < threshold_ && last_speed_ < speed_;
+    return quiescent(ctx, threshold_, speed_, &last_ratio_, &last_speed_);
   }
   std::string progress(const StageContext&) const override {
     std::ostringstream os;

@@ -84,8 +84,7 @@ class UnfoldStage : public Stage {
       phase_ = 2;
     }
     if (phase_ == 2 && t >= t_relax + 0.1 * open_time_) {
-      last_ratio_ = ctx.max_acceleration() / reference_acceleration(ctx);
-      return last_ratio_ < threshold_ && ctx.max_speed() < speed_ * ctx.sheet.size;
+      return quiescent(ctx, threshold_, speed_, &last_ratio_);
     }
     return false;
   }

@@ -29,19 +29,30 @@ WallTerm::WallTerm(std::shared_ptr<const Wall> wall, Index num_nodes, WallProfil
                    double range)
     : wall_(std::move(wall)), n_(num_nodes), profile_(profile), range_(range) {}
 
+namespace {
+// Node i's penetration of the wall: returns false when out of reach, else fills the profile's
+// U, F, dF at the penetration and the distance derivatives.
+struct Contact {
+  double U, F, dF;
+  Vec3 g;
+  Mat3 H;
+};
+bool touch(const Wall& wall, const WallProfile& prof, double range, const State& s, Index i,
+           Contact& c) {
+  double d;
+  wall.distance(node(s.x, i), s.t, d, c.g, c.H);
+  if (d >= range) return false;
+  prof.eval(range - d, c.U, c.F, c.dF);
+  return true;
+}
+}  // namespace
+
 double WallTerm::energy(const State& s) const {
   double e = 0.0;
 #pragma omp parallel for reduction(+ : e) schedule(static)
   for (Index i = 0; i < n_; ++i) {
-    double d;
-    Vec3 g;
-    Mat3 H;
-    wall_->distance(node(s.x, i), s.t, d, g, H);
-    if (d < range_) {
-      double U, F, dF;
-      profile_.eval(range_ - d, U, F, dF);
-      e += U;
-    }
+    Contact c;
+    if (touch(*wall_, profile_, range_, s, i, c)) e += c.U;
   }
   return e;
 }
@@ -49,15 +60,8 @@ double WallTerm::energy(const State& s) const {
 void WallTerm::add_force(const State& s, VecX& f) const {
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n_; ++i) {
-    double d;
-    Vec3 g;
-    Mat3 H;
-    wall_->distance(node(s.x, i), s.t, d, g, H);
-    if (d < range_) {
-      double U, F, dF;
-      profile_.eval(range_ - d, U, F, dF);
-      f.segment<3>(3 * i) += F * g;
-    }
+    Contact c;
+    if (touch(*wall_, profile_, range_, s, i, c)) f.segment<3>(3 * i) += c.F * c.g;
   }
 }
 
@@ -65,16 +69,10 @@ void WallTerm::add_jacobians(const State& s, Jacobians& J) const {
   double* val = J.Hx.valuePtr();
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n_; ++i) {
-    double d;
-    Vec3 g;
-    Mat3 H;
-    wall_->distance(node(s.x, i), s.t, d, g, H);
-    if (d < range_) {
-      // F = -dU/dd, so Hx = dF/dpen grad d grad d^T - F Hess d.
-      double U, F, dF;
-      profile_.eval(range_ - d, U, F, dF);
-      add_block(val, slots_[i], dF * g * g.transpose() - F * H);
-    }
+    // F = -dU/dd, so Hx = dF/dpen grad d grad d^T - F Hess d.
+    Contact c;
+    if (touch(*wall_, profile_, range_, s, i, c))
+      add_block(val, slots_[i], c.dF * c.g * c.g.transpose() - c.F * c.H);
   }
 }
 
