@@ -7,7 +7,9 @@
 // interior point; level 3 three per edge and three interior points. Sites along an edge are
 // spaced by |e|/(L+1), so with mean edge length l the spacing is l/(L+1); auto_refinement picks
 // the smallest L with l/(L+1) <= sigma, so a point of the sheet is never farther than about
-// 0.6 sigma from a site and a sheet approaching another meets the repulsion before passing.
+// 0.6 sigma from a site and a sheet approaching another meets the repulsion before passing; and
+// at least L = 2 while sigma < 0.9 l, because only interior sites (L >= 2) can keep apart two
+// triangles one edge apart (their node and edge sites exclude each other, see below).
 // Every physical site exists once: node sites first (site s = node s), then the L sites of each
 // edge (owned by the edge's first triangle), then the L(L-1)/2 interior sites of each triangle.
 //
@@ -17,9 +19,8 @@
 // triangle of T(s) shares a node with a triangle of T(t), which is exactly N(s) and N(t) being
 // disjoint. On a flat sheet (jittered grid, mean edge l) the closest interacting sites are then
 // 2.13 l apart at level 0, 1.27 l at level 1, 0.97 l at level 2 and 0.79 l at level 3, while
-// auto_refinement uses level L >= 1 only for sigma <= l/L (margins 1.27, 1.95, 2.36) and level 0
-// for sigma >= l (force-free up to sigma of about 2 l): a flat or gently curved sheet feels no
-// contact force. Forcing a high level with a large sigma (level 3 with sigma = l) would.
+// auto_refinement uses level 2 or 3 only for sigma < 0.9 l and level 0 or 1 above (force-free
+// up to sigma of about 2 l at level 0): a flat or gently curved sheet feels no contact force. Forcing a high level with a large sigma (level 3 with sigma = l) would.
 #pragma once
 
 #include "sim/mesh/mesh.hpp"

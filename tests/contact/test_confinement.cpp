@@ -60,9 +60,7 @@ double extent(const State& s) {
 }
 }  // namespace
 
-// Known to fail at present (28 crossing pairs against 423 for the phantom sheet at 250 nodes):
-// kept as written, in the slow set, until the contact exclusion near sharp folds is resolved.
-TEST(ConfinementSlow, SmallDiskStaysFreeOfSelfIntersections) {
+TEST(Confinement, SmallDiskStaysFreeOfSelfIntersections) {
   const auto [mesh, s] = confine(250, 2.5, true);
   EXPECT_LT(extent(s), 0.04) << "the disk was not confined";
   const std::size_t n = crumple::testing::count_self_intersections(mesh, s.x);

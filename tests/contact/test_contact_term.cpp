@@ -63,7 +63,7 @@ TEST(ContactTerm, FiniteDifferencesOnFoldedSheet) {
   const Mesh m = grid_mesh(9, 4, 1.0, 0.4, 0.2, 6);
   const double sigma = 0.6 * m.mean_edge_length();
   ContactTerm term(m, {1.0, sigma, -1, 0.3});
-  EXPECT_EQ(term.settings().level, 1);
+  EXPECT_EQ(term.settings().level, 2);  // the level-2 floor below sigma = 0.9 l
   const State s = state_at(m, jiggle(fold_sheet(m, 0.5, 0.4 * sigma), 0.03 * sigma, 4));
   term.update(s.x);
   ASSERT_GT(term.num_active(s.x), 5);

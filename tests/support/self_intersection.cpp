@@ -8,7 +8,7 @@
 
 namespace crumple::testing {
 
-std::size_t count_self_intersections(const Mesh& mesh, const VecX& x) {
+std::vector<std::pair<Index, Index>> self_intersections(const Mesh& mesh, const VecX& x) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   const Index nt = mesh.num_triangles();
   std::vector<K::Triangle_3> tri(nt);
@@ -28,7 +28,7 @@ std::size_t count_self_intersections(const Mesh& mesh, const VecX& x) {
   for (Index t = 0; t < nt; ++t) order[t] = t;
   std::sort(order.begin(), order.end(),
             [&](Index a, Index b) { return box[a].min().x() < box[b].min().x(); });
-  std::size_t count = 0;
+  std::vector<std::pair<Index, Index>> out;
   for (Index i = 0; i < nt; ++i) {
     const Index a = order[i];
     for (Index j = i + 1; j < nt && box[order[j]].min().x() <= box[a].max().x(); ++j) {
@@ -37,10 +37,14 @@ std::size_t count_self_intersections(const Mesh& mesh, const VecX& x) {
       bool adjacent = false;
       for (Index u : mesh.triangles[a])
         for (Index v : mesh.triangles[b]) adjacent = adjacent || u == v;
-      if (!adjacent && CGAL::do_intersect(tri[a], tri[b])) ++count;
+      if (!adjacent && CGAL::do_intersect(tri[a], tri[b])) out.emplace_back(std::min(a, b), std::max(a, b));
     }
   }
-  return count;
+  return out;
+}
+
+std::size_t count_self_intersections(const Mesh& mesh, const VecX& x) {
+  return self_intersections(mesh, x).size();
 }
 
 }  // namespace crumple::testing

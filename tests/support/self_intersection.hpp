@@ -7,5 +7,7 @@
 namespace crumple::testing {
 
 std::size_t count_self_intersections(const Mesh& mesh, const VecX& x);
+/// The intersecting pairs themselves (triangle indices, a < b).
+std::vector<std::pair<Index, Index>> self_intersections(const Mesh& mesh, const VecX& x);
 
 }  // namespace crumple::testing
