@@ -154,12 +154,15 @@ int auto_refinement(const Mesh& mesh, double sigma, bool* capped) {
   else if (cap)
     std::cerr << "warning: contact refinement capped at level 3: site spacing " << l / 4
               << " exceeds the interaction range " << sigma << "\n";
-  // At least level 2, so that every triangle has an interior site. Node and edge sites carry
-  // the nodes of all their triangles, so between two triangles one edge apart (no shared node)
-  // every node and edge site pair is excluded; only interior sites keep such triangles from
-  // passing through each other at a sharp fold (measured: radial confinement of a 250-node disk
-  // left 25 such crossings at level 1 and none at level 2). Level 2 keeps a flat sheet
-  // force-free only for sigma below 0.97 l, hence the condition.
+  // Floors on coarse meshes. Node and edge sites carry the nodes of all their triangles, so
+  // between two triangles one edge apart (no shared node) every node and edge site pair is
+  // excluded, and only interior sites keep such triangles from passing through each other at
+  // a sharp fold. Level 2 has one interior site per triangle (the centroid, 0.577 l from the
+  // corners), level 3 three (0.433 l from the corners): below sigma = 0.577 l the centroid
+  // alone leaves the corners uncovered and the floor is 3. Measured, radial confinement of a
+  // 250-node disk (sigma = 0.5 l): 25 crossings at level 1, 2 at level 2, none at level 3.
+  // A flat sheet stays force-free at these levels (sigma < 0.97 l at level 2).
+  if (need < 3 && sigma < 0.577 * l) return 3;
   if (need < 2 && sigma < 0.9 * l) return 2;
   return std::min(need, 3);
 }

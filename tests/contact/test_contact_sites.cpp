@@ -82,10 +82,12 @@ TEST(ContactSites, AutoRefinementPicksSpacingBelowRange) {
   EXPECT_FALSE(capped);
   EXPECT_EQ(auto_refinement(m, l, &capped), 0);
   EXPECT_EQ(auto_refinement(m, 0.99 * l, &capped), 1);
-  // Below 0.9 l at least level 2: interior sites keep triangles one edge apart from crossing.
+  // Floors: below 0.9 l at least level 2 (an interior site per triangle), below 0.577 l
+  // level 3 (interior sites within 0.433 l of every corner): only interior sites keep
+  // triangles one edge apart from crossing.
   EXPECT_EQ(auto_refinement(m, 0.89 * l, &capped), 2);
-  EXPECT_EQ(auto_refinement(m, 0.5 * l, &capped), 2);
-  EXPECT_EQ(auto_refinement(m, 0.45 * l, &capped), 2);
+  EXPECT_EQ(auto_refinement(m, 0.6 * l, &capped), 2);
+  EXPECT_EQ(auto_refinement(m, 0.5 * l, &capped), 3);
   EXPECT_EQ(auto_refinement(m, 0.3 * l, &capped), 3);
   EXPECT_FALSE(capped);
   EXPECT_EQ(auto_refinement(m, 0.1 * l, &capped), 3);
@@ -93,8 +95,9 @@ TEST(ContactSites, AutoRefinementPicksSpacingBelowRange) {
   for (double r : {1.5, 1.0, 0.7, 0.5, 0.34, 0.26}) {
     const int L = auto_refinement(m, r * l, &capped);
     EXPECT_LE(l / (L + 1), r * l * (1 + 1e-12));
-    if (L > 0 && !(L == 2 && r < 0.9)) {
-      EXPECT_GT(l / L, r * l);  // and it is the smallest such level (above the level-2 floor)
+    const int floor = r < 0.577 ? 3 : (r < 0.9 ? 2 : 0);
+    if (L > floor) {
+      EXPECT_GT(l / L, r * l);  // and it is the smallest such level (above the floors)
     }
   }
 }

@@ -97,7 +97,7 @@ TEST(ContactTerm, NoNetForceOrTorque) {
 TEST(ContactTerm, FlatAndRolledSheetsFeelNoContact) {
   const Mesh m = grid_mesh(30, 30, 1.0, 1.0, 0.2, 7);
   const double l = m.mean_edge_length();
-  for (double ratio : {0.1, 0.2, 0.3, 0.6, 1.0}) {
+  for (double ratio : {0.1, 0.2, 0.3, 0.5, 0.6, 0.8, 1.0}) {
     ContactTerm term(m, {1.0, ratio * l, -1, 0.3});
     // Rolled over 270 degrees (R = 0.21, about 5 edge lengths) and gently (R = 0.6).
     for (const VecX& x : {m.ref_flat(), roll_sheet(m, 1.0 / (1.5 * M_PI)), roll_sheet(m, 0.6)}) {
