@@ -4,10 +4,12 @@
 // per pair is bounded too) requires to hold the crumpled ball: it builds up smoothly to
 // `force` (in units of ks h_eff) over a penetration of `width` h_eff beyond the cutoff
 // (a sphere wall with the saturating profile of wall_term.hpp). A perfectly flat sheet under
-// in-plane load never leaves its plane, so the stage first gives every node a random normal
-// displacement of `perturbation` h_eff (from the run's random stream): the imperfection every
+// in-plane load never leaves its plane, so the stage first gives the sheet a smooth random
+// normal displacement of RMS `perturbation` h_eff (imperfection.hpp; from the run's random
+// stream), with wavelengths between 1/8 and 1/2 of the sheet size: the imperfection every
 // real sheet has.
 #include "protocols/stages/common.hpp"
+#include "protocols/stages/imperfection.hpp"
 #include "protocols/terms/wall_term.hpp"
 
 #include <algorithm>
@@ -28,10 +30,21 @@ class RadialConfineStage : public Stage {
   std::string type() const override { return "radial_confine"; }
   void begin(StageContext& ctx) override {
     t0_ = ctx.t_begin;
-    std::normal_distribution<double> noise(0.0, perturbation_ * ctx.sheet.h_eff);
-    for (Index i = 0; i < ctx.model->num_nodes(); ++i) ctx.state->x[3 * i + 2] += noise(ctx.rng);
-    const double r0 = radius_ > 0 ? radius_ : 0.5 * ctx.sheet.size;
+    ImperfectionSpec imp;
+    imp.rms = perturbation_ * ctx.sheet.h_eff;
+    imp.shortest = ctx.sheet.size / 8.0;
+    imp.longest = ctx.sheet.size / 2.0;
+    const VecX w = smooth_imperfection(ctx.model->mesh(), imp, ctx.rng);
+    for (Index i = 0; i < ctx.model->num_nodes(); ++i) ctx.state->x[3 * i + 2] += w[i];
     const Vec3 c = reference_centroid(ctx.model->mesh());
+    // By default the cutoff starts at the farthest node, so that no node is pushed at t = 0:
+    // the disk's nominal radius is not it (the node centroid is off the disk's centre by a
+    // fraction of an edge), and a start inside the sheet applies the full force to the rim
+    // at once, a shock that the quasistatic mode turns into rim speeds of F / b_iso.
+    double r_far = 0;
+    for (Index i = 0; i < ctx.model->num_nodes(); ++i)
+      r_far = std::max(r_far, (ctx.model->mesh().ref.col(i) - c).norm());
+    const double r0 = radius_ > 0 ? radius_ : r_far;
     wall_ = std::make_shared<SphereWall>(c, LinearMotion{r0, -speed_, t0_, final_}, true);
     const double h = ctx.sheet.h_eff;
     WallProfile prof;
@@ -64,14 +77,14 @@ StageType radial_confine_stage_type() {
   t.name = "radial_confine";
   t.help = "inward force on nodes beyond a shrinking cutoff radius (paper Fig. 5)";
   t.params = {
-      {"radius", K::Number, "0", "initial cutoff radius; 0: half the sheet size", 0.0},
+      {"radius", K::Number, "0", "initial cutoff radius; 0: the distance of the farthest node from the centre", 0.0},
       {"speed", K::Number, "0.01", "shrinking speed of the cutoff radius (length/s)", 0.0},
       {"duration", K::Number, "5", "duration of the stage (s)", 0.0, 1e30, true},
       {"final_radius", K::Number, "0", "the cutoff radius stops shrinking here", 0.0},
       {"force", K::Number, "0.2", "inward force per node beyond the cutoff, in units of ks h_eff",
        0.0, 1e30, true},
       {"perturbation", K::Number, "0.1",
-       "random normal displacement of the nodes at the start, in units of h_eff", 0.0},
+       "RMS of the smooth random normal displacement given at the start, in units of h_eff", 0.0},
       {"width", K::Number, "4", "penetration over which the force builds up, in units of h_eff",
        0.0, 1e30, true},
   };

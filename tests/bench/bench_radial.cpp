@@ -72,7 +72,7 @@ double integrate(const Setup& su, const IntegratorSettings& st, State& s, double
   ctx.state = &start;
   ctx.sheet = su.info;
   ctx.t_begin = 0.0;
-  const YAML::Node node = YAML::Load("{type: radial_confine, radius: 0.05, speed: 0.01, duration: 5}");
+  const YAML::Node node = YAML::Load("{type: radial_confine, speed: 0.01, duration: 5}");
   auto stage = StageRegistry::builtin().make(node, "bench", "stage");
   stage->begin(ctx);
   model.rebuild_pattern();

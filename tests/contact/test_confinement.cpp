@@ -39,7 +39,7 @@ std::pair<Mesh, State> confine(int nodes, double duration, bool with_contact) {
     integ.before_step = [&](const State& s) { contact->update(s.x); };
   }
   IntegratorStepper stepper(integ);
-  const YAML::Node stages = YAML::Load("[{type: radial_confine, radius: 0.05, speed: 0.01, duration: " +
+  const YAML::Node stages = YAML::Load("[{type: radial_confine, speed: 0.01, duration: " +
                                        std::to_string(duration) + "}]");
   RunnerSettings rs;
   rs.quiet = true;
