@@ -6,7 +6,7 @@
 namespace crumple {
 
 namespace {
-constexpr double kFormat = 2.0;  // bump when the layout below changes
+constexpr double kFormat = 3.0;  // bump when the layout below changes
 
 struct Reader {
   const std::vector<double>& d;
@@ -45,6 +45,7 @@ std::vector<double> flatten(const IntegratorHistory& h) {
   out.push_back(static_cast<double>(h.a_window.size()));
   out.insert(out.end(), h.a_window.begin(), h.a_window.end());
   put_vec(out, h.fsal);
+  out.push_back(h.err_prev);
   const auto& c = h.counters;
   for (double v : {double(c.steps_implicit), double(c.steps_explicit), double(c.switches),
                    double(c.newton_iters), double(c.cg_iters), double(c.implicit_attempts),
@@ -72,6 +73,7 @@ IntegratorHistory unflatten_history(const std::vector<double>& data) {
   const long w = r.count();
   for (long k = 0; k < w; ++k) h.a_window.push_back(r.next());
   h.fsal = r.vec();
+  h.err_prev = r.next();
   auto& c = h.counters;
   c.steps_implicit = r.count(), c.steps_explicit = r.count(), c.switches = r.count();
   c.newton_iters = r.count(), c.cg_iters = r.count(), c.implicit_attempts = r.count();
@@ -89,6 +91,7 @@ void IntegratorStepper::restart() {
   h.vs.clear();
   h.ps.clear();
   h.fsal.resize(0);
+  h.err_prev = 0;
   integ_.restore(h);
 }
 

@@ -125,7 +125,12 @@ int run(const Options& o) {
   Integrator integ(model, p.integrator);
   if (contact)
     integ.before_step = [&](const State& st) {
-      if (contact_on) contact->update(st.x);
+      if (!contact_on) return false;
+      // A search that finds the same pairs within sigma leaves the force unchanged, but a
+      // stale list may have missed some: count any search as a change.
+      const std::size_t searches = contact->stats().searches;
+      contact->update(st.x);
+      return contact->stats().searches != searches;
     };
   IntegratorStepper stepper(integ);
   SheetInfo info;

@@ -42,6 +42,7 @@ struct IntegratorHistory {
   int steps_in_mode = 0;
   std::vector<double> a_window;  ///< last a_max/a_ref values, oldest first
   VecX fsal;                   ///< explicit mode: derivative at the newest point (empty if none)
+  double err_prev = 0;         ///< explicit mode: error norm of the last accepted step (0: none)
   IntegratorSummary counters;
 };
 
@@ -66,8 +67,10 @@ class Integrator {
   double a_ref() const { return a_ref_; }
   const IntegratorSettings& settings() const { return settings_; }
 
-  /// Called before every step attempt with the current state (stages, contact updates).
-  std::function<void(const State&)> before_step;
+  /// Called before every step attempt with the current state (contact updates). Returns
+  /// true if the force at that state may have changed (a contact re-search), which drops the
+  /// explicit mode's reused first stage (FSAL).
+  std::function<bool(const State&)> before_step;
 
  private:
   struct Attempt {

@@ -36,7 +36,11 @@ std::pair<Mesh, State> confine(int nodes, double duration, bool with_contact) {
     cs.sigma = std::max(t.info.h_eff, 0.5 * t.mesh.mean_edge_length());
     contact = std::make_shared<ContactTerm>(t.mesh, cs);
     model.add_term(contact, TermKind::Contact);
-    integ.before_step = [&](const State& s) { contact->update(s.x); };
+    integ.before_step = [&](const State& s) {
+      const std::size_t n = contact->stats().searches;
+      contact->update(s.x);
+      return contact->stats().searches != n;
+    };
   }
   IntegratorStepper stepper(integ);
   const YAML::Node stages = YAML::Load("[{type: radial_confine, speed: 0.01, duration: " +

@@ -32,10 +32,12 @@ TEST(ContactInRun, FoldedLayersDoNotPassThrough) {
   double dmin = 1e300;
   Eigen::Matrix3Xd pos;
   integ.before_step = [&](const State& s) {
+    const std::size_t n = contact->stats().searches;
     contact->update(s.x);
     contact->sites().positions(s.x, pos);
     for (const auto& [a, b] : contact->candidates())
       if (contact->sites().interact(a, b)) dmin = std::min(dmin, (pos.col(a) - pos.col(b)).norm());
+    return contact->stats().searches != n;
   };
   IntegratorStepper stepper(integ);
   // gap 0: the tethers aim the folded half exactly onto the other one.
