@@ -138,6 +138,8 @@ bool ProtocolRunner::run(State& s, RunSink& sink, const Checkpoint* resume) {
       while (!finished) {
         if (s.t >= cfg_.t_max - eps) {
           stage->end(ctx);
+          stage_wall_[stage->type()] += std::chrono::duration<double>(
+              std::chrono::steady_clock::now() - stage_wall_start_).count();
           if (!cfg_.quiet) std::fprintf(stderr, "stopped at t_max = %g s\n", cfg_.t_max);
           sink.checkpoint(make_checkpoint(ctx, c, k, false, s, rng_begin, contact_begin));
           return false;

@@ -1,6 +1,8 @@
 // Self-contact force term (contact_term.hpp; paper eq. 10-12, B.8-B.10).
 #include "sim/contact/contact_term.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -131,7 +133,17 @@ Index ContactTerm::num_active(const VecX& x) const {
   return active;
 }
 
+namespace {
+// Adds the wall time of its scope to a counter (evaluations run from serial code).
+struct ScopeTimer {
+  double& acc;
+  double t0 = omp_get_wtime();
+  ~ScopeTimer() { acc += omp_get_wtime() - t0; }
+};
+}  // namespace
+
 double ContactTerm::energy(const State& s) const {
+  const ScopeTimer timer{stats_.eval_seconds};
   const Index m = static_cast<Index>(cand_.size());
   double e = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : e)
@@ -141,6 +153,7 @@ double ContactTerm::energy(const State& s) const {
 }
 
 void ContactTerm::add_force(const State& s, VecX& f) const {
+  const ScopeTimer timer{stats_.eval_seconds};
   const Index m = static_cast<Index>(cand_.size());
   std::vector<Vec3> F1(m);
 #pragma omp parallel for schedule(static)
@@ -159,6 +172,7 @@ void ContactTerm::add_force(const State& s, VecX& f) const {
 }
 
 void ContactTerm::add_jacobians(const State& s, Jacobians& J) const {
+  const ScopeTimer timer{stats_.eval_seconds};
   const Index m = static_cast<Index>(cand_.size());
   if (m == 0) return;
   if (!pattern_) throw std::logic_error("ContactTerm::add_jacobians: bind() a pattern first");

@@ -39,6 +39,7 @@ struct ContactStats {
   std::size_t searches = 0;     ///< grid searches run
   std::size_t pattern_changes = 0;
   double search_seconds = 0;    ///< wall time in searches (grid + bookkeeping)
+  double eval_seconds = 0;      ///< wall time evaluating energy, force and Jacobian (response)
   SearchStats last;             ///< the last search's grid figures
 };
 
@@ -70,6 +71,7 @@ class ContactTerm : public ForceTerm {
   /// Candidate pairs closer than sigma at x.
   Index num_active(const VecX& x) const;
   const ContactStats& stats() const { return stats_; }
+  void reset_stats() { stats_ = ContactStats{}; }
 
  private:
   void search(const VecX& x);
@@ -90,7 +92,7 @@ class ContactTerm : public ForceTerm {
   std::vector<std::uint64_t> cross_;   // node pairs (a < b) across candidate pairs, sorted
   const BlockPattern* pattern_ = nullptr;
   std::uint64_t version_ = 0;
-  ContactStats stats_;
+  mutable ContactStats stats_;  // eval_seconds is accrued in const evaluations
 };
 
 }  // namespace crumple

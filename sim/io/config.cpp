@@ -239,12 +239,14 @@ Params parse(YAML::Node root, Context& ctx) {
   if (s.h_min > s.h_max) ctx.fail(in.get("h_min") ? in.get("h_min") : root, "integrator.h_min",
                                   "must not exceed integrator.h_max");
 
-  Section ct(root, "contact", ctx, {"enabled", "sigma", "refinement", "stiffness", "skin"});
+  Section ct(root, "contact", ctx, {"enabled", "sigma", "refinement", "stiffness", "skin",
+                                          "fold_barrier"});
   ct.flag("enabled", p.contact.enabled);
   ct.number("sigma", p.contact.sigma, 0, kInf);
   ct.text("refinement", p.contact.refinement, {"auto", "0", "1", "2", "3"});
   ct.number("stiffness", p.contact.stiffness, 0, kInf);
   ct.number("skin", p.contact.skin, 0, 10);
+  ct.flag("fold_barrier", p.contact.fold_barrier);
 
   Section pr(root, "protocol", ctx, {"cycles", "t_max", "stages"});
   pr.integer("cycles", p.protocol.cycles, 1, 1e6);
@@ -356,6 +358,7 @@ std::string resolved_yaml(const Params& p) {
   e << YAML::Key << "refinement" << YAML::Value << p.contact.refinement;
   e << YAML::Key << "stiffness" << YAML::Value << p.contact.stiffness;
   e << YAML::Key << "skin" << YAML::Value << p.contact.skin;
+  e << YAML::Key << "fold_barrier" << YAML::Value << p.contact.fold_barrier;
   e << YAML::EndMap;
   e << YAML::Key << "protocol" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "cycles" << YAML::Value << p.protocol.cycles;

@@ -39,6 +39,7 @@ struct ContactParams {
   std::string refinement = "auto";  ///< auto | 0 | 1 | 2 | 3
   double stiffness = 0;          ///< contact stiffness; 0: ks
   double skin = 0.25;            ///< candidate-list skin, fraction of sigma
+  bool fold_barrier = true;      ///< keep hinges from folding through themselves
 };
 
 struct ProtocolParams {

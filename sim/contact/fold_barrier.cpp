@@ -1,0 +1,117 @@
+// Fold barrier (fold_barrier.hpp).
+#include "sim/contact/fold_barrier.hpp"
+
+#include "sim/model/hinge_geometry.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace crumple {
+
+namespace {
+
+// E(psi) = K u^3 / (psi0^2 psi), u = psi0 - psi, and its first two derivatives in psi.
+struct Barrier {
+  double e, d1, d2;
+};
+
+Barrier barrier(double K, double psi0, double psi) {
+  if (!(psi > 0.0)) {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {inf, -inf, inf};
+  }
+  const double u = psi0 - psi, c = K / (psi0 * psi0);
+  return {c * u * u * u / psi, c * (-3.0 * u * u / psi - u * u * u / (psi * psi)),
+          c * (6.0 * u / psi + 6.0 * u * u / (psi * psi) + 2.0 * u * u * u / (psi * psi * psi))};
+}
+
+double opening(double theta) { return M_PI - std::abs(theta); }
+
+}  // namespace
+
+FoldBarrierTerm::FoldBarrierTerm(const Mesh& mesh, double ks, double sigma)
+    : mesh_(&mesh), K_(ks * sigma * sigma) {
+  psi0_.resize(mesh.num_hinges());
+  for (Index h = 0; h < mesh.num_hinges(); ++h) {
+    const auto& nd = mesh.hinges[h].nodes;
+    const Vec3 x0 = mesh.ref.col(nd[0]), e = mesh.ref.col(nd[1]) - x0;
+    const double len = e.norm();
+    const double w2 = e.cross(Vec3(mesh.ref.col(nd[2]) - x0)).norm() / len;
+    const double w3 = e.cross(Vec3(mesh.ref.col(nd[3]) - x0)).norm() / len;
+    psi0_[h] = std::min(sigma / std::min(w2, w3), 0.5 * M_PI);
+  }
+}
+
+std::vector<Index> FoldBarrierTerm::active_hinges(const VecX& x) const {
+  const Index nh = mesh_->num_hinges();
+  std::vector<char> on(nh, 0);
+#pragma omp parallel for schedule(static)
+  for (Index h = 0; h < nh; ++h) {
+    const auto& nd = mesh_->hinges[h].nodes;
+    const double th = bend_angle(node(x, nd[0]), node(x, nd[1]), node(x, nd[2]), node(x, nd[3]));
+    on[h] = opening(th) < psi0_[h];
+  }
+  std::vector<Index> out;
+  for (Index h = 0; h < nh; ++h)
+    if (on[h]) out.push_back(h);
+  return out;
+}
+
+double FoldBarrierTerm::energy(const State& s) const {
+  double e = 0;
+  for (Index h : active_hinges(s.x)) {
+    const auto& nd = mesh_->hinges[h].nodes;
+    const double th =
+        bend_angle(node(s.x, nd[0]), node(s.x, nd[1]), node(s.x, nd[2]), node(s.x, nd[3]));
+    e += barrier(K_, psi0_[h], opening(th)).e;
+  }
+  return e;
+}
+
+void FoldBarrierTerm::add_force(const State& s, VecX& f) const {
+  // Few hinges are ever near a complete fold: a serial pass over them, in hinge order.
+  for (Index h : active_hinges(s.x)) {
+    const auto& nd = mesh_->hinges[h].nodes;
+    Vec12 g;
+    const double th = bend_angle_derivatives(node(s.x, nd[0]), node(s.x, nd[1]),
+                                             node(s.x, nd[2]), node(s.x, nd[3]), g, nullptr);
+    const Barrier b = barrier(K_, psi0_[h], opening(th));
+    // F = -E' grad psi = E' sign(theta) grad theta
+    const double w = b.d1 * (th >= 0 ? 1.0 : -1.0);
+    for (int a = 0; a < 4; ++a) f.segment<3>(3 * nd[a]) += w * g.segment<3>(3 * a);
+  }
+}
+
+void FoldBarrierTerm::add_jacobians(const State& s, Jacobians& J) const {
+  double* val = J.Hx.valuePtr();
+  for (Index h : active_hinges(s.x)) {
+    const auto& nd = mesh_->hinges[h].nodes;
+    Vec12 g;
+    Mat12 H;
+    const double th = bend_angle_derivatives(node(s.x, nd[0]), node(s.x, nd[1]),
+                                             node(s.x, nd[2]), node(s.x, nd[3]), g, &H);
+    const Barrier b = barrier(K_, psi0_[h], opening(th));
+    const double sg = th >= 0 ? 1.0 : -1.0;
+    Mat12 K = b.d2 * g * g.transpose() - (b.d1 * sg) * H;
+    const auto& sl = slots_[h];
+    for (int a = 0; a < 4; ++a)
+      for (int c = 0; c < 4; ++c) add_block(val, sl[4 * a + c], K.block<3, 3>(3 * a, 3 * c));
+  }
+}
+
+void FoldBarrierTerm::coupled_pairs(std::vector<std::pair<Index, Index>>& out) const {
+  for (const auto& hg : mesh_->hinges)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) out.emplace_back(hg.nodes[a], hg.nodes[b]);
+}
+
+void FoldBarrierTerm::bind(const BlockPattern& pattern) {
+  slots_.resize(mesh_->num_hinges());
+  for (Index h = 0; h < mesh_->num_hinges(); ++h) {
+    const auto& nd = mesh_->hinges[h].nodes;
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) slots_[h][4 * a + b] = pattern.slot(nd[a], nd[b]);
+  }
+}
+
+}  // namespace crumple

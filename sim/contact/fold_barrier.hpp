@@ -1,0 +1,49 @@
+// Fold barrier: keeps a hinge from closing completely and folding through itself.
+//
+// Contact sites of adjacent triangles never interact (contact_sites.hpp), and the bending force
+// vanishes at a complete fold: with c = 2 sin(theta/2), dc/dtheta = cos(theta/2) = 0 at
+// theta = pi. So nothing stops a hinge from passing theta = pi, after which the triangles around
+// it cross one another (radial confinement of a 3000-node disk into a ball left 2-3 crossings,
+// each next to a hinge folded to 176-180 degrees). This term is the missing piece of
+// self-avoidance at the scale of one hinge: with the opening psi = pi - |theta| of the fold,
+//     E_h = K (psi0_h - psi)^3 / (psi0_h^2 psi)   for psi < psi0_h, 0 otherwise,
+// which is C^2 at psi0_h and grows without bound as psi -> 0. The opening at which it starts,
+// psi0_h = sigma / w_h with w_h the smaller rest altitude of the two wings over the hinge edge
+// (capped at pi/2), is where the two layers of the fold come within the contact range sigma of
+// each other, and K = ks sigma^2 is the scale of the contact energy (contact_potential.hpp).
+// With psi' = -sign(theta) theta' (hinge_geometry.hpp gives theta's gradient and Hessian):
+//     F = -E'(psi) grad psi,   Hx = E''(psi) grad theta grad theta^T - E'(psi) sign(theta) H(theta).
+// Hinges far from a complete fold cost one bend angle per evaluation.
+#pragma once
+
+#include "sim/mesh/mesh.hpp"
+#include "sim/model/force_term.hpp"
+
+namespace crumple {
+
+class FoldBarrierTerm : public ForceTerm {
+ public:
+  /// Keeps a reference to mesh (it must outlive the term).
+  FoldBarrierTerm(const Mesh& mesh, double ks, double sigma);
+
+  std::string name() const override { return "fold_barrier"; }
+  double energy(const State& s) const override;
+  void add_force(const State& s, VecX& f) const override;
+  void add_jacobians(const State& s, Jacobians& J) const override;
+  /// The hinge stencils (already coupled by bending).
+  void coupled_pairs(std::vector<std::pair<Index, Index>>& out) const override;
+  void bind(const BlockPattern& pattern) override;
+
+  /// Opening below which hinge h is pushed open.
+  double onset(Index h) const { return psi0_[h]; }
+  /// Hinges with psi < psi0 at x, ascending.
+  std::vector<Index> active_hinges(const VecX& x) const;
+
+ private:
+  const Mesh* mesh_;
+  double K_;
+  std::vector<double> psi0_;
+  std::vector<std::array<BlockSlot, 16>> slots_;
+};
+
+}  // namespace crumple
