@@ -4,25 +4,23 @@
 #include "sim/model/hinge_geometry.hpp"
 
 #include <cmath>
-#include <limits>
 
 namespace crumple {
 
 namespace {
 
-// E(psi) = K u^3 / (psi0^2 psi), u = psi0 - psi, and its first two derivatives in psi.
+// E(psi) = K u^3 / (psi0^2 (psi + delta)), u = psi0 - psi, and its first two derivatives in
+// psi. delta = kDelta psi0 keeps everything finite at a complete fold (see the header).
+constexpr double kDelta = 0.02;
+
 struct Barrier {
   double e, d1, d2;
 };
 
 Barrier barrier(double K, double psi0, double psi) {
-  if (!(psi > 0.0)) {
-    const double inf = std::numeric_limits<double>::infinity();
-    return {inf, -inf, inf};
-  }
-  const double u = psi0 - psi, c = K / (psi0 * psi0);
-  return {c * u * u * u / psi, c * (-3.0 * u * u / psi - u * u * u / (psi * psi)),
-          c * (6.0 * u / psi + 6.0 * u * u / (psi * psi) + 2.0 * u * u * u / (psi * psi * psi))};
+  const double u = psi0 - psi, c = K / (psi0 * psi0), q = psi + kDelta * psi0;
+  return {c * u * u * u / q, c * (-3.0 * u * u / q - u * u * u / (q * q)),
+          c * (6.0 * u / q + 6.0 * u * u / (q * q) + 2.0 * u * u * u / (q * q * q))};
 }
 
 double opening(double theta) { return M_PI - std::abs(theta); }

@@ -6,8 +6,11 @@
 // it cross one another (radial confinement of a 3000-node disk into a ball left 2-3 crossings,
 // each next to a hinge folded to 176-180 degrees). This term is the missing piece of
 // self-avoidance at the scale of one hinge: with the opening psi = pi - |theta| of the fold,
-//     E_h = K (psi0_h - psi)^3 / (psi0_h^2 psi)   for psi < psi0_h, 0 otherwise,
-// which is C^2 at psi0_h and grows without bound as psi -> 0. The opening at which it starts,
+//     E_h = K (psi0_h - psi)^3 / (psi0_h^2 (psi + delta))   for psi < psi0_h, 0 otherwise,
+// which is C^2 at psi0_h and steep but finite at a complete fold (delta = 0.02 psi0_h: E(0) =
+// 50 K and |dE/dpsi| = 2650 K / psi0 there, i.e. a force of about 2650 ks sigma on a wing tip,
+// far above the largest contact force 0.54 ks sigma). A finite barrier keeps every force finite when a step lands next to
+// theta = pi (an unbounded one gave non-finite explicit stages). The opening at which it starts,
 // psi0_h = sigma / w_h with w_h the smaller rest altitude of the two wings over the hinge edge
 // (capped at pi/2), is where the two layers of the fold come within the contact range sigma of
 // each other, and K = ks sigma^2 is the scale of the contact energy (contact_potential.hpp).

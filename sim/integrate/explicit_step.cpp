@@ -67,6 +67,16 @@ void Integrator::explicit_attempt(const State& s, double h, Attempt& a) {
   }
   if (!y4.allFinite() || !k5.allFinite()) {
     a.failure = "non-finite state in the explicit step";
+    // Name the terms whose force is not finite at the step's start (if any): the diagnostic
+    // a failed run prints.
+    State s0 = s;
+    std::string bad;
+    for (const auto& e : model_.terms()) {
+      VecX f = VecX::Zero(model_.num_dofs());
+      e.term->add_force(s0, f);
+      if (!f.allFinite()) bad += (bad.empty() ? "" : ", ") + e.term->name();
+    }
+    if (!bad.empty()) a.failure += " (non-finite force at the start from: " + bad + ")";
     return;
   }
   a.ok = true;
