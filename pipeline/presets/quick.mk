@@ -1,4 +1,4 @@
-# Preset `quick` (the default): an ensemble of small sheets, about 15-20 minutes on 2 cores
-# (measured: one cycle at 1000 nodes takes 19 s on 2 threads; time grows about as nodes^1.8).
+# Preset `quick` (the default): an ensemble of small sheets, about 13 minutes on 2 cores with the
+# build (measured: each seed 6-6.5 min on one thread, two seeds at a time; 73-79 s per cycle).
 PRESET_SEEDS := 1 2 3 4
 PRESET_SETS := --set mesh.nodes=1500 --set protocol.cycles=5
