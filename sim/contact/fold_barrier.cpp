@@ -41,28 +41,29 @@ FoldBarrierTerm::FoldBarrierTerm(const Mesh& mesh, double ks, double sigma)
 }
 
 std::vector<Index> FoldBarrierTerm::active_hinges(const VecX& x) const {
+  std::vector<Index> out;
+  for (const auto& [h, theta] : near_complete_folds(x)) out.push_back(h);
+  return out;
+}
+
+std::vector<std::pair<Index, double>> FoldBarrierTerm::near_complete_folds(const VecX& x) const {
   const Index nh = mesh_->num_hinges();
-  std::vector<char> on(nh, 0);
+  std::vector<double> theta(nh);
 #pragma omp parallel for schedule(static)
   for (Index h = 0; h < nh; ++h) {
     const auto& nd = mesh_->hinges[h].nodes;
-    const double th = bend_angle(node(x, nd[0]), node(x, nd[1]), node(x, nd[2]), node(x, nd[3]));
-    on[h] = opening(th) < psi0_[h];
+    theta[h] = bend_angle(node(x, nd[0]), node(x, nd[1]), node(x, nd[2]), node(x, nd[3]));
   }
-  std::vector<Index> out;
+  std::vector<std::pair<Index, double>> out;
   for (Index h = 0; h < nh; ++h)
-    if (on[h]) out.push_back(h);
+    if (opening(theta[h]) < psi0_[h]) out.emplace_back(h, theta[h]);
   return out;
 }
 
 double FoldBarrierTerm::energy(const State& s) const {
   double e = 0;
-  for (Index h : active_hinges(s.x)) {
-    const auto& nd = mesh_->hinges[h].nodes;
-    const double th =
-        bend_angle(node(s.x, nd[0]), node(s.x, nd[1]), node(s.x, nd[2]), node(s.x, nd[3]));
-    e += barrier(K_, psi0_[h], opening(th)).e;
-  }
+  for (const auto& [h, theta] : near_complete_folds(s.x))
+    e += barrier(K_, psi0_[h], opening(theta)).e;
   return e;
 }
 

@@ -22,6 +22,9 @@
 #include "sim/mesh/mesh.hpp"
 #include "sim/model/force_term.hpp"
 
+#include <utility>
+#include <vector>
+
 namespace crumple {
 
 class FoldBarrierTerm : public ForceTerm {
@@ -43,6 +46,10 @@ class FoldBarrierTerm : public ForceTerm {
   std::vector<Index> active_hinges(const VecX& x) const;
 
  private:
+  /// (hinge, bend angle) of every hinge with psi < psi0 at x, ascending: one bend angle per
+  /// hinge, in parallel.
+  std::vector<std::pair<Index, double>> near_complete_folds(const VecX& x) const;
+
   const Mesh* mesh_;
   double K_;
   std::vector<double> psi0_;

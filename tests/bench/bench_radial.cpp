@@ -39,12 +39,7 @@ struct Setup {
 
 Setup make_setup(int nodes, double mass_scale) {
   Setup s;
-  MeshSpec spec;
-  spec.shape = "disk";
-  spec.size = 0.1;
-  spec.nodes = nodes;
-  spec.seed = 1;
-  s.mesh = generate_mesh(spec);
+  s.mesh = generate_mesh(MeshSpec{"disk", 0.1, nodes, 1});
   const double h = 1.25e-4, Y = 1e9, rho = 1400;
   const double kappa = Y * h * h * h / (12.0 * (1.0 - 1.0 / 9.0));
   s.params.ks = std::sqrt(3.0) / 2.0 * Y * h;

@@ -2,6 +2,7 @@
 // crumpled the disk, no two non-adjacent triangles intersect. The fast test uses a small disk
 // and a short compression; the `slow` one the 3000-node sheet confined into a ball.
 #include "sim/contact/self_contact.hpp"
+#include "sim/model/hinge_geometry.hpp"
 #include "sim/mesh/generate.hpp"
 #include "tests/protocols/runner_fixture.hpp"
 #include "tests/support/self_intersection.hpp"
@@ -18,12 +19,7 @@ namespace {
 // Returns the final state of a disk of `nodes` nodes confined for `duration` seconds.
 std::pair<Mesh, State> confine(int nodes, double duration, bool with_contact) {
   crumple::testing::TinySheet t;
-  MeshSpec spec;
-  spec.shape = "disk";
-  spec.size = 0.1;
-  spec.nodes = nodes;
-  spec.seed = 1;
-  t.mesh = generate_mesh(spec);
+  t.mesh = generate_mesh(MeshSpec{"disk", 0.1, nodes, 1});
   t.params.mass = 1e4 * 1400 * 2.5e-4 * t.mesh.total_area() / t.mesh.num_nodes();
   t.info.mass = t.params.mass;
   t.info.area = t.mesh.total_area();
@@ -69,17 +65,16 @@ void describe_crossings(const Mesh& mesh, const VecX& x) {
     for (Index t : {a, b})
       for (Index i : mesh.triangles[t])
         std::printf(" %ld%s", static_cast<long>(i), mesh.boundary[i] ? "b" : "");
-    // The sharpest fold nearby: the angle between the normals of the hinges touching either.
+    // The sharpest fold nearby: the largest |bend angle| of the hinges touching either.
     double fold = 0;
     for (const Hinge& h : mesh.hinges) {
       bool near = false;
       for (Index i : h.nodes)
         for (Index t : {a, b})
           for (Index j : mesh.triangles[t]) near = near || i == j;
-      if (!near) continue;
-      const Vec3 x0 = node(x, h.nodes[0]), e0 = node(x, h.nodes[1]) - x0;
-      const Vec3 n1 = e0.cross(node(x, h.nodes[2]) - x0), n2 = (node(x, h.nodes[3]) - x0).cross(e0);
-      fold = std::max(fold, std::acos(std::clamp(n1.normalized().dot(n2.normalized()), -1.0, 1.0)));
+      if (near)
+        fold = std::max(fold, std::abs(bend_angle(node(x, h.nodes[0]), node(x, h.nodes[1]),
+                                                  node(x, h.nodes[2]), node(x, h.nodes[3]))));
     }
     std::printf("; nearest nodes %.3g now, %.3g in the reference (edge %.3g); sharpest fold "
                 "nearby %.1f deg\n", now, ref, mesh.mean_edge_length(), fold * 180 / M_PI);

@@ -1,7 +1,7 @@
 // Self-contact in a run: a sheet folded onto itself, its top half driven down onto the bottom
 // half by the fold's tethers, never lets its layers pass through each other: the smallest
 // distance between interacting contact sites stays >= 0.3 sigma at every step.
-#include "sim/contact/contact_term.hpp"
+#include "sim/contact/self_contact.hpp"
 #include "sim/mesh/generate.hpp"
 #include "tests/protocols/runner_fixture.hpp"
 
@@ -26,18 +26,19 @@ TEST(ContactInRun, FoldedLayersDoNotPassThrough) {
   ContactSettings cs;
   cs.ks = t.params.ks;
   cs.sigma = 0.25 * t.mesh.mean_edge_length();
-  auto contact = std::make_shared<ContactTerm>(t.mesh, cs);
-  model.add_term(contact, TermKind::Contact);
+  // The site repulsion alone (no fold barrier): the test is about layers, not hinges.
+  const SelfContact self(t.mesh, cs, false);
+  self.add_to(model);
+  const ContactTerm* contact = self.pairs.get();
   Integrator integ(model, t.settings);
   double dmin = 1e300;
   Eigen::Matrix3Xd pos;
   integ.before_step = [&](const State& s) {
-    const std::size_t n = contact->stats().searches;
-    contact->update(s.x);
+    const bool searched = self.update(s.x);
     contact->sites().positions(s.x, pos);
     for (const auto& [a, b] : contact->candidates())
       if (contact->sites().interact(a, b)) dmin = std::min(dmin, (pos.col(a) - pos.col(b)).norm());
-    return contact->stats().searches != n;
+    return searched;
   };
   IntegratorStepper stepper(integ);
   // gap 0: the tethers aim the folded half exactly onto the other one.

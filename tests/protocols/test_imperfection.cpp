@@ -12,14 +12,7 @@ using namespace crumple::stages;
 
 namespace {
 
-Mesh disk(int nodes) {
-  MeshSpec spec;
-  spec.shape = "disk";
-  spec.size = 0.1;
-  spec.nodes = nodes;
-  spec.seed = 3;
-  return generate_mesh(spec);
-}
+Mesh disk(int nodes) { return generate_mesh(MeshSpec{"disk", 0.1, nodes, 3}); }
 
 ImperfectionSpec spec_for(double rms) {
   ImperfectionSpec s;
