@@ -11,9 +11,9 @@ SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 DEB_PACKAGES := build-essential cmake git pkg-config libeigen3-dev libhdf5-dev hdf5-tools \
   libyaml-cpp-dev libopencv-dev libcgal-dev libcli11-dev libspdlog-dev libfmt-dev \
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
-  python3-matplotlib python3-numpy python3-h5py python3-scipy
+  python3-matplotlib python3-numpy python3-h5py python3-scipy python3-yaml
 
-.PHONY: all deps build test test-all bench reproduce clean
+.PHONY: all deps build test test-all bench reproduce calibrate clean
 
 all: build
 
@@ -46,6 +46,7 @@ bench: build
 	@for b in $(BUILD)/tests/bench/bench_*; do [ -x "$$b" ] && echo "== $$b" && $$b; done; true
 
 include pipeline/reproduce.mk
+include pipeline/calibration/calibrate.mk
 
 clean:
 	rm -rf $(BUILD) runs results
