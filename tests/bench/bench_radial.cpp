@@ -13,6 +13,7 @@
 // Mass scaling makes explicit steps larger (by its square root) and so changes the comparison:
 // the paper's figures are for unscaled mass.
 #include "protocols/integrator_stepper.hpp"
+#include "tests/bench/radial_sheet.hpp"
 #include "protocols/registry.hpp"
 #include "sim/contact/self_contact.hpp"
 #include "sim/mesh/generate.hpp"
@@ -30,30 +31,6 @@
 using namespace crumple;
 
 namespace {
-
-struct Setup {
-  Mesh mesh;
-  ModelParams params;
-  SheetInfo info;
-};
-
-Setup make_setup(int nodes, double mass_scale) {
-  Setup s;
-  s.mesh = generate_mesh(MeshSpec{"disk", 0.1, nodes, 1});
-  const double h = 1.25e-4, Y = 1e9, rho = 1400;
-  const double kappa = Y * h * h * h / (12.0 * (1.0 - 1.0 / 9.0));
-  s.params.ks = std::sqrt(3.0) / 2.0 * Y * h;
-  s.params.kb = 2.0 * kappa / std::sqrt(3.0);
-  s.params.mass = mass_scale * rho * h * s.mesh.total_area() / s.mesh.num_nodes();
-  s.params.b_iso = 0.01 * std::sqrt(s.params.ks * s.params.mass);
-  s.params.b_int = 0.1 * std::sqrt(s.params.ks * s.params.mass);
-  s.info.size = 0.1;
-  s.info.area = s.mesh.total_area();
-  s.info.h_eff = std::sqrt(8 * s.params.kb / s.params.ks);
-  s.info.ks = s.params.ks, s.info.kb = s.params.kb, s.info.mass = s.params.mass;
-  s.info.spacing = s.mesh.mean_edge_length();
-  return s;
-}
 
 IntegratorSettings settings_for(const std::string& solver, int block, bool explicit_only) {
   IntegratorSettings st;
@@ -74,17 +51,10 @@ struct RunStats {
 };
 
 // Integrates `s` to t_end under the radial confinement stage (begun at t = 0).
-double integrate(const Setup& su, const IntegratorSettings& st, State& s, double t_end,
+double integrate(const RadialSheet& su, const IntegratorSettings& st, State& s, double t_end,
                  RunStats* out, bool with_contact) {
   SheetModel model(su.mesh, su.params);
-  std::unique_ptr<SelfContact> contact;
-  if (with_contact) {
-    ContactSettings cs;
-    cs.ks = su.params.ks;
-    cs.sigma = std::max(su.info.h_eff, 0.5 * su.info.spacing);
-    contact = std::make_unique<SelfContact>(su.mesh, cs);
-    contact->add_to(model);
-  }
+  std::unique_ptr<SelfContact> contact = with_contact ? add_contact(su, model) : nullptr;
   Integrator integ(model, st);
   if (contact) integ.before_step = [&](const State& x) { return contact->update(x.x); };
   StageContext ctx;
@@ -119,7 +89,7 @@ int main(int argc, char** argv) {
   const double mass_scale = argc > 5 ? std::atof(argv[5]) : 1e4;
   const bool with_contact = argc > 6 ? std::atoi(argv[6]) != 0 : true;
   const bool only_two = argc > 7 && std::string(argv[7]) == "short";
-  const Setup su = make_setup(nodes, mass_scale);
+  const RadialSheet su = make_radial_sheet(nodes, mass_scale);
   State s = SheetModel(su.mesh, su.params).rest_state();
   std::printf("radial confinement, %d nodes, %d threads, mass scale %g, %s: reaching t0 = %g s ...\n",
               su.mesh.num_nodes(), omp_get_max_threads(), mass_scale,

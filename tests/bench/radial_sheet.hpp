@@ -1,0 +1,51 @@
+// The radial-confinement sheet of the benchmarks (paper Fig. 5a): a 10 cm disk, h_eff
+// 0.125 mm, Y = 1 GPa, density 1400 kg/m^3 with a mass scale, drag 0.01 and internal damping
+// 0.1 of sqrt(ks m) as the protocol files' defaults.
+#pragma once
+
+#include "protocols/registry.hpp"
+#include "sim/contact/self_contact.hpp"
+#include "sim/mesh/generate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace crumple {
+
+struct RadialSheet {
+  Mesh mesh;
+  ModelParams params;
+  SheetInfo info;
+};
+
+inline RadialSheet make_radial_sheet(int nodes, double mass_scale) {
+  RadialSheet s;
+  s.mesh = generate_mesh(MeshSpec{"disk", 0.1, nodes, 1});
+  const double h = 1.25e-4, Y = 1e9, rho = 1400;
+  const double kappa = Y * h * h * h / (12.0 * (1.0 - 1.0 / 9.0));
+  s.params.ks = std::sqrt(3.0) / 2.0 * Y * h;
+  s.params.kb = 2.0 * kappa / std::sqrt(3.0);
+  s.params.mass = mass_scale * rho * h * s.mesh.total_area() / s.mesh.num_nodes();
+  s.params.b_iso = 0.01 * std::sqrt(s.params.ks * s.params.mass);
+  s.params.b_int = 0.1 * std::sqrt(s.params.ks * s.params.mass);
+  s.info.size = 0.1;
+  s.info.area = s.mesh.total_area();
+  s.info.h_eff = std::sqrt(8 * s.params.kb / s.params.ks);
+  s.info.ks = s.params.ks, s.info.kb = s.params.kb, s.info.mass = s.params.mass;
+  s.info.spacing = s.mesh.mean_edge_length();
+  return s;
+}
+
+/// Self-contact as crumple-sim sets it up (sigma = max(h_eff, half an edge), fold barrier),
+/// added to `model`.
+inline std::unique_ptr<SelfContact> add_contact(const RadialSheet& su, SheetModel& model) {
+  ContactSettings cs;
+  cs.ks = su.params.ks;
+  cs.sigma = std::max(su.info.h_eff, 0.5 * su.info.spacing);
+  auto contact = std::make_unique<SelfContact>(su.mesh, cs);
+  contact->add_to(model);
+  return contact;
+}
+
+}  // namespace crumple
