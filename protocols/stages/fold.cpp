@@ -11,6 +11,8 @@
 // scales as 1 / (lambda R) with lambda the linear node density; yield (c > c0) and the plastic
 // set therefore depend on lambda c0, the collapse variable of Fig. 3b (beta = 0.04 lambda).
 // A fold pinched to a single line of hinges would instead yield the same at every resolution.
+// radius 0 is that pinched fold: every node tethered, the flap laid exactly onto the other half
+// (used to press layers into contact).
 // The fold is reached over `duration` (smooth ramp), then held for `hold` so the plastic flow
 // can settle; a following `release` lets it spring back to the final angle.
 #include "protocols/stages/common.hpp"
@@ -98,8 +100,9 @@ StageType fold_stage_type() {
       {"duration", K::Number, "0.2", "time to fold (s)", 0.0, 1e30, true},
       {"hold", K::Number, "0", "time the fold is held after reaching the angle (s)", 0.0},
       {"radius", K::Number, "0.05",
-       "radius of the fold's loop in sheet sizes; a strip of width angle x radius is left free",
-       0.0, 0.25, true},
+       "radius of the fold's loop in sheet sizes; a strip of width angle x radius is left free; "
+       "0: a pinched fold, the flap laid exactly onto the other half",
+       0.0, 0.25},
       {"stiffness", K::Number, "0.05", "tether stiffness per node, in units of ks", 0.0, 1e30,
        true},
   };

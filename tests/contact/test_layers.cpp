@@ -41,8 +41,8 @@ TEST(ContactInRun, FoldedLayersDoNotPassThrough) {
     return searched;
   };
   IntegratorStepper stepper(integ);
-  // gap 0: the tethers aim the folded half exactly onto the other one.
-  const YAML::Node stages = YAML::Load("[{type: fold, angle: 180, duration: 0.2, gap: 0}]");
+  // radius 0: the tethers aim the folded half exactly onto the other one.
+  const YAML::Node stages = YAML::Load("[{type: fold, angle: 180, duration: 0.2, radius: 0}]");
   RunnerSettings rs;
   rs.quiet = true;
   rs.frame_dt = 1.0;
