@@ -82,6 +82,7 @@ double integrate(const RadialSheet& su, const IntegratorSettings& st, State& s, 
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // lines show up at once when piped to a file
   const int nodes = argc > 1 ? std::atoi(argv[1]) : 3000;
   const double t0 = argc > 2 ? std::atof(argv[2]) : 1.0;
   const double dt = argc > 3 ? std::atof(argv[3]) : 1.0;
