@@ -14,9 +14,6 @@
 // the paper's figures are for unscaled mass.
 #include "protocols/integrator_stepper.hpp"
 #include "tests/bench/radial_sheet.hpp"
-#include "protocols/registry.hpp"
-#include "sim/contact/self_contact.hpp"
-#include "sim/mesh/generate.hpp"
 
 #include <omp.h>
 

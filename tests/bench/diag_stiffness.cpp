@@ -13,7 +13,6 @@
 // thousand nodes at most.
 //   diag_stiffness [nodes=500] [t_end=2] [interval=0.1] [mass_scale=1e4] [contact=1]
 #include "protocols/integrator_stepper.hpp"
-#include "sim/contact/self_contact.hpp"
 #include "tests/bench/radial_sheet.hpp"
 
 #include <Eigen/Eigenvalues>
