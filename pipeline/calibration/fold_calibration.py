@@ -54,6 +54,8 @@ def measure(path):
         tri = f["mesh/triangles"][()]
         last = sorted(f["frames"].keys())[-1]
         x = f["frames"][last]["x"][()]
+        prov = {k: f["meta"].attrs.get(k) for k in ("program_version", "git_revision", "seed")}
+        prov = {k: (v.decode() if isinstance(v, bytes) else str(v)) for k, v in prov.items()}
     st = fold_stage(cfg, path)
     side = float(cfg["mesh"]["size"])
     angle = math.radians(float(st.get("angle", 180)))
@@ -74,8 +76,16 @@ def measure(path):
     area = 0.5 * np.abs(np.cross(ref[tri[:, 1]] - ref[tri[:, 0]], ref[tri[:, 2]] - ref[tri[:, 0]])[:, 2]).sum()
     lam = math.sqrt(n / (area / side ** 2))
     c0 = float(cfg["integrator"]["plastic_c0"])
-    return dict(run=os.path.basename(path), nodes=n, lam=lam, c0=c0, lam_c0=lam * c0,
+    return dict(run=os.path.basename(path), nodes=n, prov=prov, lam=lam, c0=c0, lam_c0=lam * c0,
                 theta_deg=math.degrees(theta), c_f=2 * math.sin(theta / 2))
+
+
+def provenance(rows):
+    """crumple-sim version(s), git revision(s) and seeds of the runs, for the outputs' headers."""
+    def values(key):
+        return ", ".join(sorted({r["prov"][key] for r in rows}))
+    return (f"crumple-sim {values('program_version')} (git {values('git_revision')}), "
+            f"seeds {values('seed')}")
 
 
 def line_fit(x, y):
@@ -105,6 +115,7 @@ def main():
 
     os.makedirs(args.output, exist_ok=True)
     with open(os.path.join(args.output, "fold_calibration.csv"), "w", newline="") as f:
+        f.write(f"# {provenance(rows)}\n")
         w = csv.writer(f)
         w.writerow(["run", "nodes", "lambda", "c0", "lambda_c0", "theta_f_deg", "c_f", "x"])
         for r in rows:
@@ -145,6 +156,7 @@ def main():
                 f"RMS residual {rms:.3f}.\n")
         f.write(f"The offset alpha that collapses these runs best: {best:.3f} "
                 f"(RMS residual {min(scores):.3f}); the paper's alpha is {ALPHA}.\n")
+        f.write(f"\nRuns: {provenance(rows)}.\n")
     print(f"fold calibration: {len(rows)} runs, c_f = {a:.3f} {b:+.3f} x (c_f >= {CF_MIN}), "
           f"RMS {rms:.3f}; best alpha {best:.3f} (RMS {min(scores):.3f})")
 
