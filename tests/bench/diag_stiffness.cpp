@@ -11,7 +11,8 @@
 // add up to mu), and nu, the lowest eigenvalue of Hv, in units of b_iso (A tends to Hv / (beta h)
 // as h -> 0, so nu < 0 means no step size helps). Dense eigen-decompositions: for a few
 // thousand nodes at most.
-//   diag_stiffness [nodes=500] [t_end=2] [interval=0.1] [mass_scale=1e4] [contact=1]
+//   diag_stiffness [nodes=500] [t_end=2] [interval=0.1] [mass_scale=1] [contact=1] [force]
+// (force: the confining force per node in units of ks h_eff; default the stage's)
 #include "protocols/integrator_stepper.hpp"
 #include "tests/bench/radial_sheet.hpp"
 
@@ -26,8 +27,9 @@ int main(int argc, char** argv) {
   const int nodes = argc > 1 ? std::atoi(argv[1]) : 500;
   const double t_end = argc > 2 ? std::atof(argv[2]) : 2.0;
   const double interval = argc > 3 ? std::atof(argv[3]) : 0.1;
-  const double mass_scale = argc > 4 ? std::atof(argv[4]) : 1e4;
+  const double mass_scale = argc > 4 ? std::atof(argv[4]) : 1.0;
   const bool with_contact = argc > 5 ? std::atoi(argv[5]) != 0 : true;
+  const double force = argc > 6 ? std::atof(argv[6]) : 0.0;
   const RadialSheet su = make_radial_sheet(nodes, mass_scale);
   SheetModel model(su.mesh, su.params);
   std::unique_ptr<SelfContact> contact = with_contact ? add_contact(su, model) : nullptr;
@@ -40,8 +42,7 @@ int main(int argc, char** argv) {
   ctx.model = &model;
   ctx.state = &s;
   ctx.sheet = su.info;
-  const YAML::Node node = YAML::Load("{type: radial_confine, speed: 0.01, duration: 5}");
-  auto stage = StageRegistry::builtin().make(node, "diag", "stage");
+  auto stage = StageRegistry::builtin().make(radial_stage_node(force), "diag", "stage");
   stage->begin(ctx);
   if (contact) contact->update(s.x);
   model.rebuild_pattern();

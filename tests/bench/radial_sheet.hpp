@@ -37,6 +37,14 @@ inline RadialSheet make_radial_sheet(int nodes, double mass_scale) {
   return s;
 }
 
+/// The radial confinement stage as the protocols write it: cutoff shrinking at 1 cm/s for 5 s,
+/// `force` per node beyond it in units of ks h_eff (<= 0: the stage's default).
+inline YAML::Node radial_stage_node(double force) {
+  YAML::Node n = YAML::Load("{type: radial_confine, speed: 0.01, duration: 5}");
+  if (force > 0) n["force"] = force;
+  return n;
+}
+
 /// Self-contact as crumple-sim sets it up (sigma = max(h_eff, half an edge), fold barrier),
 /// added to `model`.
 inline std::unique_ptr<SelfContact> add_contact(const RadialSheet& su, SheetModel& model) {
