@@ -149,6 +149,12 @@ void Integrator::advance_to(State& s, double t_end) {
           hist_.err_prev = e;
         }
         if (rejections > 0) fac = std::min(fac, 1.0);  // no growth right after a rejection
+        // Newton's contraction worsens as h grows: a step that took more than the target number
+        // of iterations is close to the h where Newton fails, and doubling h from there costs a
+        // failed attempt (up to newton_max_iters linear solves) and a cut by 4. Hold h one
+        // iteration over the target, shrink it beyond (the error estimate alone cannot see this).
+        if (implicit && a.newton_iters > settings_.newton_target)
+          fac = std::min(fac, a.newton_iters == settings_.newton_target + 1 ? 1.0 : 0.7);
         hist_.h = std::clamp(h * std::min(fac, settings_.max_growth), settings_.h_min,
                              settings_.h_max);
         break;

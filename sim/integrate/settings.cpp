@@ -40,6 +40,7 @@ void validate(const IntegratorSettings& s) {
           "need 0 < h_min <= h_init <= h_max");
   require(s.max_growth > 1.0, "max_growth must be > 1");
   require(s.newton_tol > 0 && s.newton_max_iters >= 1, "newton_tol > 0, newton_max_iters >= 1");
+  require(s.newton_target >= 1, "newton_target >= 1");
   require(s.block_size >= 1, "block_size must be >= 1");
   require(s.cg_tol > 0 && s.cg_max_iters >= 1, "cg_tol > 0, cg_max_iters >= 1");
   require(s.switch_down < s.switch_up, "switch_down must be below switch_up");

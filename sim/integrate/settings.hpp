@@ -30,6 +30,7 @@ struct IntegratorSettings {
   double max_growth = 2.0;   ///< largest ratio of consecutive steps
   double newton_tol = 0.1;   ///< converged when the weighted RMS of (dx, dp) <= newton_tol
   int newton_max_iters = 8;
+  int newton_target = 2;     ///< an accepted step that needed more Newton iterations does not grow h
   LinearSolverKind linear_solver = LinearSolverKind::BlockJacobiCG;
   int block_size = 18;       ///< scalar rows per block-Jacobi block (18 = 6 nodes)
   double cg_tol = 1e-4;      ///< relative residual |r| / |b| (an inexact Newton step)

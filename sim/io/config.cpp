@@ -204,7 +204,7 @@ Params parse(YAML::Node root, Context& ctx) {
 
   Section in(root, "integrator", ctx,
              {"mode_initial", "bdf_order", "rtol", "atol", "h_init", "h_min", "h_max",
-              "max_growth", "newton_tol", "newton_max_iters", "linear_solver", "block_size",
+              "max_growth", "newton_tol", "newton_max_iters", "newton_target", "linear_solver", "block_size",
               "cg_tol", "cg_max_iters", "switch_up", "switch_down", "switch_window",
               "switch_min_steps", "explicit_rtol", "plasticity", "plastic_c0", "plastic_gamma",
               "plastic_rate"});
@@ -221,6 +221,7 @@ Params parse(YAML::Node root, Context& ctx) {
   in.number("max_growth", s.max_growth, 1, kInf, true);
   in.number("newton_tol", s.newton_tol, 0, kInf, true);
   in.integer("newton_max_iters", s.newton_max_iters, 1, 1000);
+  in.integer("newton_target", s.newton_target, 1, 1000);
   std::string solver = to_string(s.linear_solver);
   in.text("linear_solver", solver, {"block_jacobi", "cg", "incomplete_cholesky", "ldlt"});
   s.linear_solver = parse_linear_solver(solver);
@@ -338,6 +339,7 @@ std::string resolved_yaml(const Params& p) {
   e << YAML::Key << "max_growth" << YAML::Value << s.max_growth;
   e << YAML::Key << "newton_tol" << YAML::Value << s.newton_tol;
   e << YAML::Key << "newton_max_iters" << YAML::Value << s.newton_max_iters;
+  e << YAML::Key << "newton_target" << YAML::Value << s.newton_target;
   e << YAML::Key << "linear_solver" << YAML::Value << to_string(s.linear_solver);
   e << YAML::Key << "block_size" << YAML::Value << s.block_size;
   e << YAML::Key << "cg_tol" << YAML::Value << s.cg_tol;

@@ -95,6 +95,34 @@ TEST(Integrator, QuasistaticRelaxationDecreasesEnergyToRest) {
   EXPECT_EQ(max_order, 4);
 }
 
+// Step control: an accepted quasistatic step that needed more Newton iterations than
+// newton_target never lets the next step grow (and shrinks it two over the target). With a
+// target of 1 the relaxation above has plenty of such steps.
+TEST(Integrator, SlowNewtonStepsDoNotGrowTheStep) {
+  SheetModel model(sheet(), params(1.0));
+  IntegratorSettings st = no_switching(IntegrationMode::Implicit);
+  st.newton_target = 1;
+  Integrator integ(model, st);
+  State s = stretched(model, 1.05);
+  for (Index i = 0; i < model.num_nodes(); ++i) s.x[3 * i + 2] = 0.05 * std::sin(3 * s.x[3 * i]);
+  integ.advance_to(s, 100.0);
+  const auto& log = integ.log();
+  int slow = 0, grew_elsewhere = 0;
+  for (std::size_t i = 0; i + 1 < log.size(); ++i) {
+    if (log[i].newton_iters > st.newton_target) {
+      ++slow;
+      const double cap = log[i].newton_iters == st.newton_target + 1 ? 1.0 : 0.7;
+      EXPECT_LE(log[i + 1].h, cap * log[i].h * (1 + 1e-12)) << "after the step at t = " << log[i].t;
+    } else if (log[i + 1].h > log[i].h) {
+      ++grew_elsewhere;
+    }
+  }
+  std::printf("%d of %zu steps over the Newton target; %d others let h grow\n", slow, log.size(),
+              grew_elsewhere);
+  EXPECT_GE(slow, 3);
+  EXPECT_GE(grew_elsewhere, 3);  // the rule holds h back only where Newton was slow
+}
+
 namespace {
 
 // A single hinge: x0 = (0,0,0), x1 = (1,0,0), x2 above the edge, x3 below, folded by phi.
