@@ -77,17 +77,16 @@ double integrate(const RadialSheet& su, const IntegratorSettings& st, State& s, 
   model.rebuild_pattern();
   if (contact) contact->pairs->reset_stats();
   const auto t0 = std::chrono::steady_clock::now();
-  if (progress) {
-    const double t_start = s.t, chunk = (t_end - t_start) / 10;
-    for (int k = 1; k <= 10; ++k) {
-      integ.advance_to(s, k == 10 ? t_end : t_start + k * chunk);
-      const IntegratorSummary& c = integ.summary();
-      std::printf("    t = %.3g s: %ld steps (%ld explicit, %ld switches, %ld rejected), %.1f s wall\n",
-                  s.t, c.steps(), c.steps_explicit, c.switches, c.rejections(),
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    }
+  const double t_start = s.t;
+  const int chunks = progress ? 10 : 1;
+  for (int k = 1; k <= chunks; ++k) {
+    integ.advance_to(s, k == chunks ? t_end : t_start + k * (t_end - t_start) / chunks);
+    if (!progress) continue;
+    const IntegratorSummary c = integ.summary();
+    std::printf("    t = %.3g s: %ld steps (%ld explicit, %ld switches, %ld rejected), %.1f s wall\n",
+                s.t, c.steps(), c.steps_explicit, c.switches, c.rejections(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
-  integ.advance_to(s, t_end);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (out) {
     out->integ = integ.summary();

@@ -39,6 +39,13 @@ State stretched(const SheetModel& model, double factor) {
   return s;
 }
 
+// Stretched by 5 % and bent a little, so that stretching and bending both relax.
+State stretched_and_bent(const SheetModel& model) {
+  State s = stretched(model, 1.05);
+  for (Index i = 0; i < model.num_nodes(); ++i) s.x[3 * i + 2] = 0.05 * std::sin(3 * s.x[3 * i]);
+  return s;
+}
+
 IntegratorSettings no_switching(IntegrationMode mode) {
   IntegratorSettings st;
   st.mode_initial = mode;
@@ -73,9 +80,7 @@ TEST(Integrator, UndampedExplicitDynamicsConservesEnergy) {
 TEST(Integrator, QuasistaticRelaxationDecreasesEnergyToRest) {
   SheetModel model(sheet(), params(1.0));
   Integrator integ(model, no_switching(IntegrationMode::Implicit));
-  State s = stretched(model, 1.05);
-  // Bend it a little too, so bending relaxes as well.
-  for (Index i = 0; i < model.num_nodes(); ++i) s.x[3 * i + 2] = 0.05 * std::sin(3 * s.x[3 * i]);
+  State s = stretched_and_bent(model);
   const double e0 = model.energies(s).potential();
   integ.advance_to(s, 100.0);
   double prev = e0;
@@ -103,8 +108,7 @@ TEST(Integrator, SlowNewtonStepsDoNotGrowTheStep) {
   IntegratorSettings st = no_switching(IntegrationMode::Implicit);
   st.newton_target = 1;
   Integrator integ(model, st);
-  State s = stretched(model, 1.05);
-  for (Index i = 0; i < model.num_nodes(); ++i) s.x[3 * i + 2] = 0.05 * std::sin(3 * s.x[3 * i]);
+  State s = stretched_and_bent(model);
   integ.advance_to(s, 100.0);
   const auto& log = integ.log();
   int slow = 0, grew_elsewhere = 0;
