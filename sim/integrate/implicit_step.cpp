@@ -1,6 +1,7 @@
 // One attempt of the quasistatic BDF step with plasticity (integrator.hpp; paper eq. 31-35).
 #include "sim/integrate/bdf.hpp"
 #include "sim/integrate/error_norm.hpp"
+#include "sim/integrate/forcing.hpp"
 #include "sim/integrate/integrator.hpp"
 
 #include <omp.h>
@@ -57,6 +58,7 @@ void Integrator::implicit_attempt(const State& s, double h, Attempt& a) {
 
   VecX dx, dv, dp;
   double prev_norm = 0;
+  const ForcingTerms forcing{settings_.cg_tol, settings_.cg_tol_max, settings_.newton_tol};
   for (int k = 1; k <= settings_.newton_max_iters; ++k) {
     a.newton_iters = k;
     double t0 = omp_get_wtime();
@@ -78,8 +80,9 @@ void Integrator::implicit_attempt(const State& s, double h, Attempt& a) {
       a.failure = "non-finite force or residual";
       return;
     }
+    const double eta = forcing.at(k, prev_norm);
     t0 = omp_get_wtime();
-    const LinearSolveResult ls = solver_.solve(newton_->matrix(), newton_->rhs(), dx);
+    const LinearSolveResult ls = solver_.solve(newton_->matrix(), newton_->rhs(), dx, eta);
     hist_.counters.wall_linear += omp_get_wtime() - t0;
     a.cg_iters += ls.iterations;
     hist_.counters.cg_iters += ls.iterations;

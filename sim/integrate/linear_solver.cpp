@@ -27,7 +27,7 @@ LinearSolveResult from_cg(const CgResult& cg) {
 
 }  // namespace
 
-LinearSolveResult LinearSolver::solve(const SpMat& A, const VecX& b, VecX& x) {
+LinearSolveResult LinearSolver::solve(const SpMat& A, const VecX& b, VecX& x, double tol) {
   switch (kind_) {
     case LinearSolverKind::BlockJacobiCG: {
       block_jacobi_.compute(A);
@@ -38,10 +38,10 @@ LinearSolveResult LinearSolver::solve(const SpMat& A, const VecX& b, VecX& x) {
                     std::to_string(block_jacobi_.failed_block()) + " failed)";
         return r;
       }
-      return from_cg(pcg_solve(A, b, x, block_jacobi_, tol_, max_iters_));
+      return from_cg(pcg_solve(A, b, x, block_jacobi_, tol, max_iters_));
     }
     case LinearSolverKind::PlainCG:
-      return from_cg(pcg_solve(A, b, x, IdentityPrecond{}, tol_, max_iters_));
+      return from_cg(pcg_solve(A, b, x, IdentityPrecond{}, tol, max_iters_));
     case LinearSolverKind::IncompleteCholeskyCG: {
       const SpMatCol Ac(A);
       Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::AMDOrdering<int>> ic(Ac);
@@ -55,7 +55,7 @@ LinearSolveResult LinearSolver::solve(const SpMat& A, const VecX& b, VecX& x) {
         const decltype(ic)& m;
         VecX solve(const VecX& r) const { return m.solve(r); }
       };
-      return from_cg(pcg_solve(A, b, x, Wrap{ic}, tol_, max_iters_));
+      return from_cg(pcg_solve(A, b, x, Wrap{ic}, tol, max_iters_));
     }
     case LinearSolverKind::DirectLDLT: {
       LinearSolveResult r;

@@ -22,8 +22,11 @@ struct LinearSolveResult {
 class LinearSolver {
  public:
   LinearSolver(LinearSolverKind kind, int block_size, double tol, int max_iters);
-  /// Solves A x = b, A symmetric (both triangles stored), on the pattern's sparsity.
-  LinearSolveResult solve(const SpMat& A, const VecX& b, VecX& x);
+  /// Solves A x = b, A symmetric (both triangles stored), on the pattern's sparsity, CG to
+  /// the relative residual given at construction.
+  LinearSolveResult solve(const SpMat& A, const VecX& b, VecX& x) { return solve(A, b, x, tol_); }
+  /// The same with CG stopping at relative residual `tol` (an inexact Newton step, forcing.hpp).
+  LinearSolveResult solve(const SpMat& A, const VecX& b, VecX& x, double tol);
   LinearSolverKind kind() const { return kind_; }
 
  private:

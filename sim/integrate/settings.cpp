@@ -43,6 +43,7 @@ void validate(const IntegratorSettings& s) {
   require(s.newton_target >= 1, "newton_target >= 1");
   require(s.block_size >= 1, "block_size must be >= 1");
   require(s.cg_tol > 0 && s.cg_max_iters >= 1, "cg_tol > 0, cg_max_iters >= 1");
+  require(s.cg_tol <= s.cg_tol_max && s.cg_tol_max < 1, "need cg_tol <= cg_tol_max < 1");
   require(s.switch_down < s.switch_up, "switch_down must be below switch_up");
   require(s.switch_window >= 1 && s.switch_min_steps >= 0, "switch_window >= 1");
   require(s.plastic_c0 >= 0 && s.plastic_c0 < 2, "plastic_c0 must be in [0, 2)");

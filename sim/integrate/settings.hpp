@@ -33,7 +33,8 @@ struct IntegratorSettings {
   int newton_target = 2;     ///< an accepted step that needed more Newton iterations does not grow h
   LinearSolverKind linear_solver = LinearSolverKind::BlockJacobiCG;
   int block_size = 18;       ///< scalar rows per block-Jacobi block (18 = 6 nodes)
-  double cg_tol = 1e-4;      ///< relative residual |r| / |b| (an inexact Newton step)
+  double cg_tol = 1e-2;      ///< CG relative residual |r| / |b|: first Newton iteration (forcing.hpp)
+  double cg_tol_max = 1e-1;  ///< loosest, for later iterations close to convergence (= cg_tol: fixed)
   int cg_max_iters = 2000;
   double switch_up = 1e-3;   ///< <a_max/a_ref> above this: implicit -> explicit
   double switch_down = 1e-6; ///< <a_max/a_ref> below this: explicit -> implicit

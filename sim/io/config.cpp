@@ -205,7 +205,7 @@ Params parse(YAML::Node root, Context& ctx) {
   Section in(root, "integrator", ctx,
              {"mode_initial", "bdf_order", "rtol", "atol", "h_init", "h_min", "h_max",
               "max_growth", "newton_tol", "newton_max_iters", "newton_target", "linear_solver", "block_size",
-              "cg_tol", "cg_max_iters", "switch_up", "switch_down", "switch_window",
+              "cg_tol", "cg_tol_max", "cg_max_iters", "switch_up", "switch_down", "switch_window",
               "switch_min_steps", "explicit_rtol", "plasticity", "plastic_c0", "plastic_gamma",
               "plastic_rate"});
   auto& s = p.integrator;
@@ -227,6 +227,7 @@ Params parse(YAML::Node root, Context& ctx) {
   s.linear_solver = parse_linear_solver(solver);
   in.integer("block_size", s.block_size, 3, 1e6);
   in.number("cg_tol", s.cg_tol, 0, 1, true);
+  in.number("cg_tol_max", s.cg_tol_max, 0, 1, true);
   in.integer("cg_max_iters", s.cg_max_iters, 1, 1e9);
   in.number("switch_up", s.switch_up, 0, kInf, true);
   in.number("switch_down", s.switch_down, 0, kInf);
@@ -239,6 +240,9 @@ Params parse(YAML::Node root, Context& ctx) {
   in.number("plastic_rate", s.plastic_rate, 0, kInf, true);
   if (s.h_min > s.h_max) ctx.fail(in.get("h_min") ? in.get("h_min") : root, "integrator.h_min",
                                   "must not exceed integrator.h_max");
+  if (s.cg_tol > s.cg_tol_max)
+    ctx.fail(in.get("cg_tol") ? in.get("cg_tol") : root, "integrator.cg_tol",
+             "must not exceed integrator.cg_tol_max (" + std::to_string(s.cg_tol_max) + ")");
 
   Section ct(root, "contact", ctx, {"enabled", "sigma", "refinement", "stiffness", "skin",
                                           "fold_barrier"});
@@ -343,6 +347,7 @@ std::string resolved_yaml(const Params& p) {
   e << YAML::Key << "linear_solver" << YAML::Value << to_string(s.linear_solver);
   e << YAML::Key << "block_size" << YAML::Value << s.block_size;
   e << YAML::Key << "cg_tol" << YAML::Value << s.cg_tol;
+  e << YAML::Key << "cg_tol_max" << YAML::Value << s.cg_tol_max;
   e << YAML::Key << "cg_max_iters" << YAML::Value << s.cg_max_iters;
   e << YAML::Key << "switch_up" << YAML::Value << s.switch_up;
   e << YAML::Key << "switch_down" << YAML::Value << s.switch_down;

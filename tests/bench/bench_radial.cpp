@@ -3,14 +3,17 @@
 // integrated once to t0; every variant (explicit only, hybrid with each linear solver) then
 // restarts from that same state and is timed over [t0, t0 + dt].
 //   bench_radial [--nodes 3000] [--t0 1 [3 ...]] [--dt 1] [--threads 2] [--mass-scale 1] [--force F]
-//                [--contact 1] [--variants all|short] [--explicit-span S]
+//                [--contact 1] [--variants all|short|hybrid] [--explicit-span S]
+//                [--cg-tol 1e-2] [--cg-tol-max 0.1]
 // With contact (the default) the sheet is self-avoiding as in crumple-sim (sites with sigma =
 // max(h_eff, half an edge) and the fold barrier), and the share of the wall time spent in
 // contact detection (grid searches) and response (force and Jacobian) is printed with the time
 // per step and per site (the contact issue's benchmark). --contact 0 is the phantom sheet: its
 // hinges can fold through theta = pi, where the bending energy with a plastic rest curvature
 // jumps, and explicit steps then fail (measured at 12000 nodes, t = 1.08 s). `--variants short`
-// runs only the explicit-only and the default hybrid variants.
+// runs only the explicit-only and the default hybrid variants, `hybrid` only the latter.
+// --cg-tol / --cg-tol-max set the CG tolerances of the timed hybrid variants (forcing.hpp; the
+// warm-up keeps the defaults), and each hybrid variant prints where its wall time went.
 // The mass is physical by default, as in the paper: the explicit step is bounded by the node
 // period sqrt(m / ks), so explicit-only integration of a full second takes hundreds of thousands
 // of steps. --explicit-span S integrates the explicit-only variant over [t0, t0 + S] only and
@@ -36,8 +39,12 @@ using namespace crumple;
 
 namespace {
 
-IntegratorSettings settings_for(const std::string& solver, int block, bool explicit_only) {
+IntegratorSettings settings_for(const std::string& solver, int block, bool explicit_only,
+                                double cg_tol = IntegratorSettings{}.cg_tol,
+                                double cg_tol_max = IntegratorSettings{}.cg_tol_max) {
   IntegratorSettings st;
+  st.cg_tol = cg_tol;
+  st.cg_tol_max = cg_tol_max;
   st.plastic_c0 = 0.3;
   st.linear_solver = parse_linear_solver(solver);
   st.block_size = block;
@@ -102,6 +109,7 @@ int main(int argc, char** argv) {
   int nodes = 3000, threads = 2;
   std::vector<double> starts{1.0};
   double dt = 1.0, mass_scale = 1.0, force = 0.0, explicit_span = 0.0;
+  double cg_tol = IntegratorSettings{}.cg_tol, cg_tol_max = IntegratorSettings{}.cg_tol_max;
   bool with_contact = true;
   std::string which = "all";
   CLI::App app{"bench_radial: radial confinement, explicit-only against the hybrid integrator"};
@@ -115,7 +123,13 @@ int main(int argc, char** argv) {
   app.add_option("--force", force, "confining force per node in ks h_eff (0: the stage's default)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--contact", with_contact, "self-contact (1) or phantom sheet (0)");
-  app.add_option("--variants", which, "all or short")->check(CLI::IsMember({"all", "short"}));
+  app.add_option("--variants", which, "all, short (explicit only and block Jacobi 18) or hybrid "
+                 "(block Jacobi 18 only)")
+      ->check(CLI::IsMember({"all", "short", "hybrid"}));
+  app.add_option("--cg-tol", cg_tol, "tightest CG relative residual of the timed hybrid variants")
+      ->check(CLI::Range(1e-12, 1.0));
+  app.add_option("--cg-tol-max", cg_tol_max, "loosest (first Newton iteration); = --cg-tol: fixed")
+      ->check(CLI::Range(1e-12, 1.0));
   app.add_option("--explicit-span", explicit_span,
                  "time the explicit-only variant on [t0, t0 + span] and scale to dt (0: all of dt)")
       ->check(CLI::NonNegativeNumber);
@@ -136,6 +150,7 @@ int main(int argc, char** argv) {
   };
   std::vector<Variant> variants{{"explicit only (RK4(3))", "cg", 18, true},
                                 {"hybrid, CG + block Jacobi 18", "block_jacobi", 18, false}};
+  if (which == "hybrid") variants.erase(variants.begin());
   if (which == "all")
     for (const Variant& v : {Variant{"hybrid, CG + block Jacobi 144", "block_jacobi", 144, false},
                              Variant{"hybrid, CG, no preconditioner", "cg", 18, false},
@@ -155,7 +170,7 @@ int main(int argc, char** argv) {
       RunStats rs;
       const double span = v.explicit_only && explicit_span > 0 ? std::min(explicit_span, dt) : dt;
       try {
-        const double measured = integrate(su, settings_for(v.solver, v.block, v.explicit_only), w,
+        const double measured = integrate(su, settings_for(v.solver, v.block, v.explicit_only, cg_tol, cg_tol_max), w,
                                           t0 + span, &rs, with_contact, force);
         const double wall = measured * dt / span;
         if (v.explicit_only) explicit_wall = wall;
@@ -171,6 +186,9 @@ int main(int argc, char** argv) {
           std::printf("    rejected attempts: error test %ld, Newton %ld, not SPD %ld, other %ld\n",
                       sum.rejected_error, sum.rejected_newton, sum.rejected_not_spd,
                       sum.rejected_other);
+        if (!v.explicit_only)
+          std::printf("    wall: implicit %.1f s (assembly %.1f, linear solves %.1f), explicit %.1f s\n",
+                      sum.wall_implicit, sum.wall_assembly, sum.wall_linear, sum.wall_explicit);
         if (with_contact) {
           const ContactStats& c = rs.contact;
           std::printf("    %.3g ms per step; contact: detection %.1f%% (%zu searches, %.3g us per "

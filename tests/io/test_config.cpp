@@ -76,6 +76,13 @@ TEST(Config, DirectConstantsComeTogether) {
   EXPECT_NE(e.find("material.mass: ks, kb and mass are given together"), std::string::npos) << e;
 }
 
+TEST(Config, CgToleranceBoundsAreOrdered) {
+  const std::string e = error_of("integrator:\n  cg_tol_max: 0.01\n  cg_tol: 0.05\n");
+  EXPECT_TRUE(starts(e, "c.yaml:3:11: integrator.cg_tol: must not exceed integrator.cg_tol_max")) << e;
+  const Params p = load_config_text("integrator: {cg_tol: 1e-3, cg_tol_max: 1e-3}\n", "c.yaml");
+  EXPECT_EQ(p.integrator.cg_tol_max, 1e-3);  // equal bounds: a fixed tolerance
+}
+
 TEST(Config, ResolvedYamlRoundTrips) {
   const Params p = load_config_text(
       "mesh: {shape: disk, nodes: 777, size: 0.3}\nintegrator: {rtol: 3.3e-5, linear_solver: cg}\n"
