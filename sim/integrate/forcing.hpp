@@ -11,7 +11,7 @@
 // A Newton iteration close to convergence is thus solved loosely, a slow one tightly.
 // (Eisenstat and Walker's residual-ratio rule, tried first, loosens the first solve and tightens
 // the second: the wrong way round for an update-based test where two iterations are the norm;
-// it cost 1.2 times more linear-solve time per Newton iteration on the radial benchmark.)
+// it cost 1.7 times more linear-solve time per Newton iteration on the radial benchmark.)
 #pragma once
 
 #include <algorithm>
