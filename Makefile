@@ -43,11 +43,15 @@ test-all: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # bench_radial at physical mass: the explicit-only variant is timed over a tenth of the
-# interval and scaled (its step is set by stability); `bench_radial --help` for the rest.
-BENCH_RADIAL ?= --nodes 3000 --explicit-span 0.1
+# interval and scaled (its step is set by stability); `bench_radial --help` for the rest. Its
+# warm state at t0 is kept (a second run skips the warm-up) and bench_precond solves on it.
+BENCH_NODES ?= 3000
+BENCH_WARM = $(BUILD)/bench_radial_warm_$(BENCH_NODES).h5
+BENCH_RADIAL ?= --nodes $(BENCH_NODES) --explicit-span 0.1 --warm-state $(BENCH_WARM)
 bench: build
-	@for b in $(BUILD)/tests/bench/bench_*; do [ -x "$$b" ] || continue; echo "== $$b"; \
-	  case $$b in *bench_radial) $$b $(BENCH_RADIAL);; *) $$b;; esac; done; true
+	@for b in bench_assembly bench_contact; do echo "== $$b"; $(BUILD)/tests/bench/$$b || exit 1; done
+	@echo "== bench_radial"; $(BUILD)/tests/bench/bench_radial $(BENCH_RADIAL)
+	@echo "== bench_precond"; $(BUILD)/tests/bench/bench_precond --nodes $(BENCH_NODES) --warm-state $(BENCH_WARM)
 
 include pipeline/reproduce.mk
 include pipeline/calibration/calibrate.mk

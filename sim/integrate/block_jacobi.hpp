@@ -1,9 +1,15 @@
-// Block-Jacobi preconditioner: dense Cholesky factors of the diagonal blocks of a sparse SPD
-// matrix (paper §3.3). Blocks are consecutive runs of block_size scalar rows; with nodes on a
-// Hilbert order (mesh generator) neighbouring nodes share a block, so the blocks hold most of
-// the matrix. The blocks are factored in parallel (OpenMP). A block whose Cholesky factorisation
-// fails proves the matrix is not positive definite: info() is then NumericalIssue and the
-// integrator rejects the step.
+// Block-Jacobi preconditioner: the inverses of the diagonal blocks of a sparse SPD matrix,
+// computed by dense Cholesky (paper §3.3). Blocks are consecutive runs of block_size scalar
+// rows; with nodes on a Hilbert order (mesh generator) neighbouring nodes share a block, so the
+// blocks hold most of the matrix. The blocks are factored in parallel (OpenMP). A block whose
+// Cholesky factorisation fails proves the matrix is not positive definite: info() is then
+// NumericalIssue and the integrator rejects the step.
+//
+// Each block's inverse is formed once per matrix and stored contiguously, so applying the
+// preconditioner (once per CG iteration) is one dense matrix-vector product per block. Two
+// triangular solves with the Cholesky factor cost the same flops, but Eigen runs them through
+// its general small-size triangular kernels: at 12000 nodes (block 18) they took 28 % of the
+// implicit wall against 37 % for the sparse matrix-vector product they precondition.
 //
 // The class has the interface Eigen's iterative solvers expect of a preconditioner (default
 // constructor, analyzePattern, factorize, compute, solve, info), so it can be used as
@@ -54,6 +60,8 @@ class BlockJacobiPreconditioner {
 
   /// z = M^{-1} r, block by block.
   VecX solve(const VecX& r) const;
+  /// The same into z (resized), without allocating when z already has r's size.
+  void apply(const VecX& r, VecX& z) const;
   Eigen::ComputationInfo info() const { return info_; }
   /// Index of the first block whose factorisation failed, -1 if none.
   int failed_block() const { return failed_block_; }
@@ -65,7 +73,8 @@ class BlockJacobiPreconditioner {
 
   int block_size_ = 18;
   Eigen::Index n_ = 0;
-  std::vector<Eigen::LLT<Eigen::MatrixXd>> blocks_;
+  int num_blocks_ = 0;
+  std::vector<double> inverses_;  // block b's inverse (column-major) at b * bs * bs
   Eigen::ComputationInfo info_ = Eigen::Success;
   int failed_block_ = -1;
 };

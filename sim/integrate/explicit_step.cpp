@@ -11,11 +11,20 @@
 namespace crumple {
 
 double Integrator::plastic_rate_at(const VecX& x, const VecX& p, VecX& g) const {
-  g.setZero(p.size());
-  if (!law_.enabled) return 0.0;
+  if (!law_.enabled) {
+    g.setZero(p.size());
+    return 0.0;
+  }
   VecX c;
   model_.bending().curvatures(x, c);
+  return plastic_rate_from(c, p, g);
+}
+
+double Integrator::plastic_rate_from(const VecX& c, const VecX& p, VecX& g) const {
+  g.setZero(p.size());
+  if (!law_.enabled) return 0.0;
   double gmax = 0;
+#pragma omp parallel for schedule(static) reduction(max : gmax)
   for (Index h = 0; h < static_cast<Index>(p.size()); ++h) {
     g[h] = law_.g(c[h], p[h]);
     gmax = std::max(gmax, std::abs(g[h]));
@@ -30,9 +39,10 @@ void Integrator::explicit_rhs(double t, const VecX& y, VecX& dy, State& sc) {
   sc.x = y.head(n3);
   sc.v = y.segment(n3, n3);
   sc.p = y.tail(nh);
-  VecX F, g;
+  VecX F, g, c;
   model_.forces(sc, F);
-  plastic_rate_at(sc.x, sc.p, g);
+  if (law_.enabled) model_.bending().last_curvatures(c);  // of sc, cached by forces()
+  plastic_rate_from(c, sc.p, g);
   dy.resize(y.size());
   dy.head(n3) = sc.v;
   dy.segment(n3, n3) = F / model_.params().mass;

@@ -82,7 +82,7 @@ void Integrator::implicit_attempt(const State& s, double h, Attempt& a) {
     }
     const double eta = forcing.at(k, prev_norm);
     t0 = omp_get_wtime();
-    const LinearSolveResult ls = solver_.solve(newton_->matrix(), newton_->rhs(), dx, eta);
+    const LinearSolveResult ls = solver_.solve(newton_->matrix(), newton_->rhs(), dx, eta, &it.x);
     hist_.counters.wall_linear += omp_get_wtime() - t0;
     a.cg_iters += ls.iterations;
     hist_.counters.cg_iters += ls.iterations;

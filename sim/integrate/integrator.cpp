@@ -17,7 +17,8 @@ Integrator::Integrator(SheetModel& model, const IntegratorSettings& settings)
     : model_(model),
       settings_(settings),
       law_{settings.plastic_c0, settings.plastic_gamma, settings.plastic_rate, settings.plasticity},
-      solver_(settings.linear_solver, settings.block_size, settings.cg_tol, settings.cg_max_iters) {
+      solver_(settings.linear_solver, settings.block_size, settings.cg_tol, settings.cg_max_iters,
+              settings.coarse_nodes) {
   validate(settings_);
   model_.rebuild_pattern();
   newton_ = std::make_unique<ReducedNewton>(model_, law_);

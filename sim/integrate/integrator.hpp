@@ -93,6 +93,8 @@ class Integrator {
   void explicit_attempt(const State& s, double h, Attempt& a);
   void explicit_rhs(double t, const VecX& y, VecX& dy, State& scratch);
   double plastic_rate_at(const VecX& x, const VecX& p, VecX& g) const;
+  /// The same from the hinge curvatures c of that state.
+  double plastic_rate_from(const VecX& c, const VecX& p, VecX& g) const;
   void after_accept(const State& s, const Attempt& a, double h, int rejections);
 
   SheetModel& model_;

@@ -6,10 +6,17 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 
+#include <stdexcept>
+
 namespace crumple {
 
-LinearSolver::LinearSolver(LinearSolverKind kind, int block_size, double tol, int max_iters)
-    : kind_(kind), tol_(tol), max_iters_(max_iters), block_jacobi_(block_size) {}
+LinearSolver::LinearSolver(LinearSolverKind kind, int block_size, double tol, int max_iters,
+                           int coarse_nodes)
+    : kind_(kind),
+      tol_(tol),
+      max_iters_(max_iters),
+      block_jacobi_(block_size),
+      two_level_(block_size, coarse_nodes) {}
 
 namespace {
 
@@ -27,8 +34,21 @@ LinearSolveResult from_cg(const CgResult& cg) {
 
 }  // namespace
 
-LinearSolveResult LinearSolver::solve(const SpMat& A, const VecX& b, VecX& x, double tol) {
+LinearSolveResult LinearSolver::solve(const SpMat& A, const VecX& b, VecX& x, double tol,
+                                     const VecX* positions) {
   switch (kind_) {
+    case LinearSolverKind::TwoLevelCG: {
+      if (!positions || positions->size() != A.rows())
+        throw std::logic_error("LinearSolver: two_level needs the node positions");
+      two_level_.compute(A, *positions);
+      if (two_level_.info() != Eigen::Success) {
+        LinearSolveResult r;
+        r.not_spd = true;
+        r.failure = "matrix not SPD (" + two_level_.failure() + ")";
+        return r;
+      }
+      return from_cg(pcg_solve(A, b, x, two_level_, tol, max_iters_));
+    }
     case LinearSolverKind::BlockJacobiCG: {
       block_jacobi_.compute(A);
       if (block_jacobi_.info() != Eigen::Success) {

@@ -20,6 +20,16 @@ struct CgResult {
   double rel_residual = 0;
 };
 
+/// z = M^{-1} r, through M.apply(r, z) where the preconditioner has it (no allocation per
+/// iteration), else through Eigen's M.solve(r).
+template <class Precond>
+void apply_preconditioner(const Precond& M, const VecX& r, VecX& z) {
+  if constexpr (requires { M.apply(r, z); })
+    M.apply(r, z);
+  else
+    z = M.solve(r);
+}
+
 /// Solves A x = b from x = 0. tol is the relative residual |b - A x| / |b|.
 template <class Precond>
 CgResult pcg_solve(const SpMat& A, const VecX& b, VecX& x, const Precond& M, double tol,
@@ -35,8 +45,8 @@ CgResult pcg_solve(const SpMat& A, const VecX& b, VecX& x, const Precond& M, dou
     res.converged = true;
     return res;
   }
-  VecX r = b;
-  VecX z = M.solve(r);
+  VecX r = b, z;
+  apply_preconditioner(M, r, z);
   VecX p = z, Ap(b.size());
   double rz = r.dot(z);
   if (!(rz > 0.0)) {
@@ -59,7 +69,7 @@ CgResult pcg_solve(const SpMat& A, const VecX& b, VecX& x, const Precond& M, dou
       res.converged = true;
       return res;
     }
-    z = M.solve(r);
+    apply_preconditioner(M, r, z);
     const double rz_new = r.dot(z);
     if (!(rz_new > 0.0)) {
       res.indefinite = true;

@@ -16,8 +16,9 @@ LinearSolverKind parse_linear_solver(const std::string& name) {
   if (name == "cg") return LinearSolverKind::PlainCG;
   if (name == "incomplete_cholesky") return LinearSolverKind::IncompleteCholeskyCG;
   if (name == "ldlt") return LinearSolverKind::DirectLDLT;
+  if (name == "two_level") return LinearSolverKind::TwoLevelCG;
   throw InputError("unknown linear solver '" + name +
-                   "'; valid: block_jacobi, cg, incomplete_cholesky, ldlt");
+                   "'; valid: two_level, block_jacobi, cg, incomplete_cholesky, ldlt");
 }
 
 std::string to_string(LinearSolverKind kind) {
@@ -26,6 +27,7 @@ std::string to_string(LinearSolverKind kind) {
     case LinearSolverKind::PlainCG: return "cg";
     case LinearSolverKind::IncompleteCholeskyCG: return "incomplete_cholesky";
     case LinearSolverKind::DirectLDLT: return "ldlt";
+    case LinearSolverKind::TwoLevelCG: return "two_level";
   }
   return "?";
 }
@@ -42,6 +44,7 @@ void validate(const IntegratorSettings& s) {
   require(s.newton_tol > 0 && s.newton_max_iters >= 1, "newton_tol > 0, newton_max_iters >= 1");
   require(s.newton_target >= 1, "newton_target >= 1");
   require(s.block_size >= 1, "block_size must be >= 1");
+  require(s.coarse_nodes >= 3, "coarse_nodes must be >= 3");
   require(s.cg_tol > 0 && s.cg_max_iters >= 1, "cg_tol > 0, cg_max_iters >= 1");
   require(s.cg_tol <= s.cg_tol_max && s.cg_tol_max < 1, "need cg_tol <= cg_tol_max < 1");
   require(s.switch_down < s.switch_up, "switch_down must be below switch_up");

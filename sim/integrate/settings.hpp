@@ -17,6 +17,7 @@ enum class LinearSolverKind {
   PlainCG,               ///< "cg": CG without preconditioner
   IncompleteCholeskyCG,  ///< "incomplete_cholesky": CG + Eigen::IncompleteCholesky
   DirectLDLT,            ///< "ldlt": Eigen::SimplicialLDLT (direct, for comparison)
+  TwoLevelCG,            ///< "two_level": CG + block Jacobi + patch rigid motions (two_level.hpp)
 };
 
 struct IntegratorSettings {
@@ -33,6 +34,7 @@ struct IntegratorSettings {
   int newton_target = 2;     ///< an accepted step that needed more Newton iterations does not grow h
   LinearSolverKind linear_solver = LinearSolverKind::BlockJacobiCG;
   int block_size = 18;       ///< scalar rows per block-Jacobi block (18 = 6 nodes)
+  int coarse_nodes = 32;     ///< nodes per patch of the two_level coarse space
   double cg_tol = 1e-2;      ///< CG relative residual |r| / |b|: first Newton iteration (forcing.hpp)
   double cg_tol_max = 1e-1;  ///< loosest, for later iterations close to convergence (= cg_tol: fixed)
   int cg_max_iters = 2000;
@@ -49,7 +51,7 @@ struct IntegratorSettings {
 
 /// "implicit" / "explicit"; throws InputError listing the valid names otherwise.
 IntegrationMode parse_integration_mode(const std::string& name);
-/// "block_jacobi", "cg", "incomplete_cholesky", "ldlt"; throws InputError otherwise.
+/// "two_level", "block_jacobi", "cg", "incomplete_cholesky", "ldlt"; throws InputError otherwise.
 LinearSolverKind parse_linear_solver(const std::string& name);
 std::string to_string(LinearSolverKind kind);
 /// Throws InputError if a value is out of range (orders, tolerances, sizes).

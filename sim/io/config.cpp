@@ -205,7 +205,7 @@ Params parse(YAML::Node root, Context& ctx) {
   Section in(root, "integrator", ctx,
              {"mode_initial", "bdf_order", "rtol", "atol", "h_init", "h_min", "h_max",
               "max_growth", "newton_tol", "newton_max_iters", "newton_target", "linear_solver", "block_size",
-              "cg_tol", "cg_tol_max", "cg_max_iters", "switch_up", "switch_down", "switch_window",
+              "coarse_nodes", "cg_tol", "cg_tol_max", "cg_max_iters", "switch_up", "switch_down", "switch_window",
               "switch_min_steps", "explicit_rtol", "plasticity", "plastic_c0", "plastic_gamma",
               "plastic_rate"});
   auto& s = p.integrator;
@@ -223,9 +223,10 @@ Params parse(YAML::Node root, Context& ctx) {
   in.integer("newton_max_iters", s.newton_max_iters, 1, 1000);
   in.integer("newton_target", s.newton_target, 1, 1000);
   std::string solver = to_string(s.linear_solver);
-  in.text("linear_solver", solver, {"block_jacobi", "cg", "incomplete_cholesky", "ldlt"});
+  in.text("linear_solver", solver, {"two_level", "block_jacobi", "cg", "incomplete_cholesky", "ldlt"});
   s.linear_solver = parse_linear_solver(solver);
   in.integer("block_size", s.block_size, 3, 1e6);
+  in.integer("coarse_nodes", s.coarse_nodes, 3, 1e9);
   in.number("cg_tol", s.cg_tol, 0, 1, true);
   in.number("cg_tol_max", s.cg_tol_max, 0, 1, true);
   in.integer("cg_max_iters", s.cg_max_iters, 1, 1e9);
@@ -346,6 +347,7 @@ std::string resolved_yaml(const Params& p) {
   e << YAML::Key << "newton_target" << YAML::Value << s.newton_target;
   e << YAML::Key << "linear_solver" << YAML::Value << to_string(s.linear_solver);
   e << YAML::Key << "block_size" << YAML::Value << s.block_size;
+  e << YAML::Key << "coarse_nodes" << YAML::Value << s.coarse_nodes;
   e << YAML::Key << "cg_tol" << YAML::Value << s.cg_tol;
   e << YAML::Key << "cg_tol_max" << YAML::Value << s.cg_tol_max;
   e << YAML::Key << "cg_max_iters" << YAML::Value << s.cg_max_iters;

@@ -162,6 +162,13 @@ void BendingTerm::add_jacobians(const State& s, Jacobians& J) const {
   }
 }
 
+void BendingTerm::last_curvatures(VecX& c) const {
+  const Index nh = static_cast<Index>(cache_.size());
+  c.resize(nh);
+#pragma omp parallel for schedule(static)
+  for (Index h = 0; h < nh; ++h) c[h] = cache_[h].c;
+}
+
 void BendingTerm::curvatures(const VecX& x, VecX& c) const {
   const Index nh = mesh_->num_hinges();
   c.resize(nh);

@@ -3,15 +3,17 @@
 // integrated once to t0; every variant (explicit only, hybrid with each linear solver) then
 // restarts from that same state and is timed over [t0, t0 + dt].
 //   bench_radial [--nodes 3000] [--t0 1 [3 ...]] [--dt 1] [--threads 2] [--mass-scale 1] [--force F]
-//                [--contact 1] [--variants all|short|hybrid] [--explicit-span S]
-//                [--cg-tol 1e-2] [--cg-tol-max 0.1]
+//                [--contact 1] [--variants all|short|hybrid|explicit] [--explicit-span S]
+//                [--cg-tol 1e-2] [--cg-tol-max 0.1] [--progress]
 // With contact (the default) the sheet is self-avoiding as in crumple-sim (sites with sigma =
 // max(h_eff, half an edge) and the fold barrier), and the share of the wall time spent in
 // contact detection (grid searches) and response (force and Jacobian) is printed with the time
 // per step and per site (the contact issue's benchmark). --contact 0 is the phantom sheet: its
 // hinges can fold through theta = pi, where the bending energy with a plastic rest curvature
 // jumps, and explicit steps then fail (measured at 12000 nodes, t = 1.08 s). `--variants short`
-// runs only the explicit-only and the default hybrid variants, `hybrid` only the latter.
+// runs only explicit-only and the hybrid with block Jacobi 18 and with the two-level
+// preconditioner (two_level.hpp), `hybrid` only the two hybrids, `explicit` only explicit-only. `--warm-state FILE` keeps the
+// warm state at the first t0 on disk, so a second run skips the warm-up.
 // --cg-tol / --cg-tol-max set the CG tolerances of the timed hybrid variants (forcing.hpp; the
 // warm-up keeps the defaults), and each hybrid variant prints where its wall time went.
 // The mass is physical by default, as in the paper: the explicit step is bounded by the node
@@ -26,6 +28,7 @@
 // the same motion, so the sheet rarely looks quasistatic: not the paper's regime.
 #include "protocols/integrator_stepper.hpp"
 #include "tests/bench/radial_sheet.hpp"
+#include "tests/bench/warm_state.hpp"
 
 #include <CLI/CLI.hpp>
 #include <omp.h>
@@ -93,9 +96,11 @@ double integrate(const RadialSheet& su, const IntegratorSettings& st, State& s, 
     integ.advance_to(s, k == chunks ? t_end : t_start + k * (t_end - t_start) / chunks);
     if (!progress) continue;
     const IntegratorSummary c = integ.summary();
-    std::printf("    t = %.3g s: %ld steps (%ld explicit, %ld switches, %ld rejected), %.1f s wall\n",
+    std::printf("    t = %.4g s: %ld steps (%ld explicit, %ld switches, %ld rejected), %.1f s wall "
+                "(implicit %.1f, explicit %.1f)\n",
                 s.t, c.steps(), c.steps_explicit, c.switches, c.rejections(),
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
+                c.wall_implicit, c.wall_explicit);
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (out) {
@@ -113,8 +118,8 @@ int main(int argc, char** argv) {
   std::vector<double> starts{1.0};
   double dt = 1.0, mass_scale = 1.0, force = 0.0, explicit_span = 0.0;
   double cg_tol = IntegratorSettings{}.cg_tol, cg_tol_max = IntegratorSettings{}.cg_tol_max;
-  bool with_contact = true;
-  std::string which = "all";
+  bool with_contact = true, progress = false;
+  std::string which = "all", warm_path;
   CLI::App app{"bench_radial: radial confinement, explicit-only against the hybrid integrator"};
   app.add_option("--nodes", nodes, "mesh nodes")->check(CLI::Range(50, 10000000));
   app.add_option("--t0", starts, "start(s) of the timed intervals (s), e.g. --t0 1 3; the warm-up "
@@ -126,9 +131,9 @@ int main(int argc, char** argv) {
   app.add_option("--force", force, "confining force per node in ks h_eff (0: the stage's default)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--contact", with_contact, "self-contact (1) or phantom sheet (0)");
-  app.add_option("--variants", which, "all, short (explicit only and block Jacobi 18) or hybrid "
-                 "(block Jacobi 18 only)")
-      ->check(CLI::IsMember({"all", "short", "hybrid"}));
+  app.add_option("--variants", which, "all, short (explicit only, block Jacobi 18 and two-level), "
+                 "hybrid (block Jacobi 18 and two-level) or explicit (explicit only)")
+      ->check(CLI::IsMember({"all", "short", "hybrid", "explicit"}));
   app.add_option("--cg-tol", cg_tol, "CG relative residual of a step's first Newton iteration "
                  "(timed hybrid variants)")
       ->check(CLI::Range(1e-12, 1.0));
@@ -138,6 +143,11 @@ int main(int argc, char** argv) {
   app.add_option("--explicit-span", explicit_span,
                  "time the explicit-only variant on [t0, t0 + span] and scale to dt (0: all of dt)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--warm-state", warm_path,
+                 "HDF5 file of the warm state at the first t0: read if it holds this mesh at that "
+                 "time (the warm-up is skipped), else written after the warm-up");
+  app.add_flag("--progress", progress, "print a line per tenth of each timed interval too (the "
+               "warm-up always does)");
   CLI11_PARSE(app, argc, argv);
   if (cg_tol > cg_tol_max) {
     std::fprintf(stderr, "bench_radial: --cg-tol %g exceeds --cg-tol-max %g\n", cg_tol, cg_tol_max);
@@ -158,19 +168,38 @@ int main(int argc, char** argv) {
     bool explicit_only;
   };
   std::vector<Variant> variants{{"explicit only (RK4(3))", "cg", 18, true},
-                                {"hybrid, CG + block Jacobi 18", "block_jacobi", 18, false}};
+                                {"hybrid, CG + block Jacobi 18", "block_jacobi", 18, false},
+                                {"hybrid, CG + two-level (18, 32)", "two_level", 18, false}};
   if (which == "hybrid") variants.erase(variants.begin());
+  if (which == "explicit") variants.resize(1);
   if (which == "all")
     for (const Variant& v : {Variant{"hybrid, CG + block Jacobi 144", "block_jacobi", 144, false},
                              Variant{"hybrid, CG, no preconditioner", "cg", 18, false},
                              Variant{"hybrid, CG + incomplete Cholesky", "incomplete_cholesky", 18, false},
                              Variant{"hybrid, direct LDLT", "ldlt", 18, false}})
       variants.push_back(v);
+  const std::string warm_description = "bench_radial warm-up, hybrid block Jacobi 18, force " +
+                                       std::to_string(force) + (with_contact ? ", contact" : "") +
+                                       ", mass scale " + std::to_string(mass_scale);
   for (const double t0 : starts) {
-    std::printf("warm-up (hybrid, block Jacobi 18) from t = %g s to t0 = %g s ...\n", s.t, t0);
-    const double warm = integrate(su, settings_for("block_jacobi", 18, false), s, t0, nullptr,
-                                  with_contact, force, true);
-    std::printf("  (%.1f s wall)\ninterval [%g s, %g s]:\n", warm, t0, t0 + dt);
+    std::string stored;
+    const bool first = t0 == starts.front();
+    if (auto w = first && !warm_path.empty()
+                     ? load_warm_state(warm_path, su.mesh.num_nodes(), t0, &stored)
+                     : std::nullopt) {
+      if (stored != warm_description)
+        std::printf("note: %s holds a state from another setup (%s)\n", warm_path.c_str(),
+                    stored.c_str());
+      s = std::move(*w);
+      std::printf("warm state at t0 = %g s read from %s\ninterval [%g s, %g s]:\n", t0,
+                  warm_path.c_str(), t0, t0 + dt);
+    } else {
+      std::printf("warm-up (hybrid, block Jacobi 18) from t = %g s to t0 = %g s ...\n", s.t, t0);
+      const double warm = integrate(su, settings_for("block_jacobi", 18, false), s, t0, nullptr,
+                                    with_contact, force, true);
+      if (first && !warm_path.empty()) save_warm_state(warm_path, s, su.mesh.num_nodes(), warm_description);
+      std::printf("  (%.1f s wall)\ninterval [%g s, %g s]:\n", warm, t0, t0 + dt);
+    }
     std::printf("%-34s %10s %8s %8s %10s %10s %8s %9s\n", "variant", "wall [s]", "steps", "expl.",
                 "newton/st", "cg/newton", "rejects", "speed-up");
     double explicit_wall = 0;
@@ -181,7 +210,7 @@ int main(int argc, char** argv) {
       try {
         const IntegratorSettings st =
             settings_for(v.solver, v.block, v.explicit_only, cg_tol, cg_tol_max);
-        const double measured = integrate(su, st, w, t0 + span, &rs, with_contact, force);
+        const double measured = integrate(su, st, w, t0 + span, &rs, with_contact, force, progress);
         const double wall = measured * dt / span;
         if (v.explicit_only) explicit_wall = wall;
         const IntegratorSummary& sum = rs.integ;

@@ -83,9 +83,18 @@ TEST(Config, CgToleranceBoundsAreOrdered) {
   EXPECT_EQ(p.integrator.cg_tol_max, 1e-3);  // equal bounds: a fixed tolerance
 }
 
+TEST(Config, TwoLevelSolverAndItsPatchSize) {
+  const Params p = load_config_text("integrator: {linear_solver: two_level, coarse_nodes: 48}\n", "c.yaml");
+  EXPECT_EQ(p.integrator.linear_solver, LinearSolverKind::TwoLevelCG);
+  EXPECT_EQ(p.integrator.coarse_nodes, 48);
+  const std::string e = error_of("integrator:\n  coarse_nodes: 2\n");
+  EXPECT_TRUE(starts(e, "c.yaml:2:17: integrator.coarse_nodes: must be between 3")) << e;
+}
+
 TEST(Config, ResolvedYamlRoundTrips) {
   const Params p = load_config_text(
-      "mesh: {shape: disk, nodes: 777, size: 0.3}\nintegrator: {rtol: 3.3e-5, linear_solver: cg}\n"
+      "mesh: {shape: disk, nodes: 777, size: 0.3}\n"
+      "integrator: {rtol: 3.3e-5, linear_solver: two_level, coarse_nodes: 40}\n"
       "protocol:\n  cycles: 2\n  stages:\n    - {type: roll, duration: 0.1}\n",
       "c.yaml");
   const std::string y1 = resolved_yaml(p);
@@ -93,6 +102,8 @@ TEST(Config, ResolvedYamlRoundTrips) {
   EXPECT_EQ(resolved_yaml(q), y1);
   EXPECT_EQ(q.mesh.nodes, 777);
   EXPECT_EQ(q.integrator.rtol, 3.3e-5);
+  EXPECT_EQ(q.integrator.linear_solver, LinearSolverKind::TwoLevelCG);
+  EXPECT_EQ(q.integrator.coarse_nodes, 40);
   EXPECT_EQ(q.protocol.stages[0]["duration"].as<double>(), 0.1);
 }
 

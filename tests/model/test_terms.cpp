@@ -92,7 +92,9 @@ void expect_fd_ok(const Case& c, const State& s, const char* where) {
   EXPECT_LE(r.hx, kTol);
   EXPECT_LE(r.hv, kTol);
   EXPECT_LE(r.hp, kTol);
-  if (term->conservative()) EXPECT_LE(r.hx_asymmetry, 1e-12);
+  if (term->conservative()) {
+    EXPECT_LE(r.hx_asymmetry, 1e-12);
+  }
 }
 
 }  // namespace
@@ -123,6 +125,22 @@ TEST(ForceTerms, FoldedStateReachesTheAngle) {
   const double theta_max = 2.0 * std::asin(0.5 * c.cwiseAbs().maxCoeff()) * 180.0 / M_PI;
   EXPECT_GT(theta_max, 165.0);
   EXPECT_LT(theta_max, 175.0);
+}
+
+TEST(ForceTerms, LastCurvaturesAreThoseOfTheLatestForce) {
+  // The explicit right-hand side takes the plastic rate's curvatures from the bending cache
+  // after the force: they must be the state's, and follow it to the next state.
+  const Mesh& m = test_mesh();
+  BendingTerm b(m, 1.0);
+  for (unsigned seed : {4u, 5u}) {
+    const State s = random_state(m, seed, 0.08);
+    VecX f = VecX::Zero(s.x.size()), c_cache, c;
+    b.add_force(s, f);
+    b.last_curvatures(c_cache);
+    b.curvatures(s.x, c);
+    ASSERT_EQ(c_cache.size(), m.num_hinges());
+    EXPECT_LT((c_cache - c).cwiseAbs().maxCoeff(), 1e-14) << "seed " << seed;
+  }
 }
 
 TEST(ForceTerms, NoNetForceOrTorque) {
