@@ -45,15 +45,15 @@ void apply_blocks(const double* inverses, int bs, Eigen::Index n, int nb, const 
     const Eigen::Index start = static_cast<Eigen::Index>(b) * bs;
     const Eigen::Index size = std::min<Eigen::Index>(bs, n - start);
     const double* inv = inverses + static_cast<std::size_t>(b) * bs * bs;
-    if (S > 0 && size == S) {
-      using Block = Eigen::Matrix<double, (S > 0 ? S : 1), (S > 0 ? S : 1)>;
-      using Vec = Eigen::Matrix<double, (S > 0 ? S : 1), 1>;
-      z.segment<(S > 0 ? S : 1)>(start).noalias() =
-          Eigen::Map<const Block>(inv) * Eigen::Map<const Vec>(r.data() + start);
-    } else {
-      z.segment(start, size).noalias() =
-          Eigen::Map<const Eigen::MatrixXd>(inv, size, size) * r.segment(start, size);
+    if constexpr (S > 0) {
+      if (size == S) {
+        z.segment<S>(start).noalias() =
+            Eigen::Map<const Eigen::Matrix<double, S, S>>(inv) * r.segment<S>(start);
+        continue;
+      }
     }
+    z.segment(start, size).noalias() =
+        Eigen::Map<const Eigen::MatrixXd>(inv, size, size) * r.segment(start, size);
   }
 }
 

@@ -11,12 +11,8 @@
 namespace crumple {
 
 double Integrator::plastic_rate_at(const VecX& x, const VecX& p, VecX& g) const {
-  if (!law_.enabled) {
-    g.setZero(p.size());
-    return 0.0;
-  }
   VecX c;
-  model_.bending().curvatures(x, c);
+  if (law_.enabled) model_.bending().curvatures(x, c);
   return plastic_rate_from(c, p, g);
 }
 

@@ -1,8 +1,9 @@
 // The linear solve of the reduced Newton system A dx = b (paper eq. 35, §3.3), with the solver
-// chosen by IntegratorSettings::linear_solver: CG with two-level (block Jacobi + patch rigid
-// motions), block-Jacobi, plain or incomplete-Cholesky preconditioning (pcg.hpp, which detects negative curvature), or a direct sparse
-// LDL^T (SPD when every pivot of D is positive). A matrix found not SPD, a CG that does not
-// converge, or a non-finite value is reported in the result; the integrator rejects the step.
+// chosen by IntegratorSettings::linear_solver: CG with block-Jacobi, two-level (block Jacobi +
+// patch rigid motions), plain or incomplete-Cholesky preconditioning (pcg.hpp, which detects
+// negative curvature), or a direct sparse LDL^T (SPD when every pivot of D is positive). A
+// matrix found not SPD, a CG that does not converge, or a non-finite value is reported in the
+// result; the integrator rejects the step.
 #pragma once
 
 #include "sim/integrate/block_jacobi.hpp"

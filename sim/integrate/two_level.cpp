@@ -3,7 +3,6 @@
 #include "sim/integrate/two_level.hpp"
 
 #include <algorithm>
-#include <array>
 
 namespace crumple {
 
@@ -19,6 +18,16 @@ Vec6 prolongation_row(const Vec3& r, int d) {
   p[d] = 1.0;
   p.tail<3>() = r.cross(Vec3::Unit(d));
   return p;
+}
+
+// The entry of `list` keyed b, appended (zero) if absent. Lists hold the few aggregates a row
+// or a patch touches, so a linear search is the fastest lookup.
+template <class T>
+T& entry(std::vector<std::pair<int, T>>& list, int b) {
+  for (auto& [key, value] : list)
+    if (key == b) return value;
+  list.emplace_back(b, T::Zero());
+  return list.back().second;
 }
 
 }  // namespace
@@ -49,28 +58,19 @@ void TwoLevelPreconditioner::compute(const SpMat& A, const VecX& x) {
     for (Index i = i0; i < i1; ++i) L = std::max(L, (x.segment<3>(3 * i) - c).norm());
     for (Index i = i0; i < i1; ++i) arm_[i] = (x.segment<3>(3 * i) - c) / (L > 0 ? L : 1.0);
   }
-  coarse_matrix(A);
   // A patch whose nodes are collinear (or a single node) would give P dependent columns and
   // P^T A P a zero pivot, reported below as not SPD. Patches of agg_ >= 3 consecutive Hilbert
-  // nodes of a triangulated sheet are not collinear.
-  const SpMatCol& C = coarse_;
-  std::vector<std::pair<int, int>> pairs;
-  pairs.reserve(C.nonZeros());
-  for (int k = 0; k < C.outerSize(); ++k)
-    for (SpMatCol::InnerIterator it(C, k); it; ++it)
-      pairs.emplace_back(static_cast<int>(it.row()), k);
-  if (pairs != coarse_pairs_) {
-    coarse_ldlt_.analyzePattern(C);
-    coarse_pairs_ = std::move(pairs);
-  }
-  coarse_ldlt_.factorize(C);
+  // nodes of a triangulated sheet are not collinear. The symbolic analysis is kept while the
+  // patches couple the same way (it changes with contact pairs only).
+  if (coarse_matrix(A)) coarse_ldlt_.analyzePattern(coarse_);
+  coarse_ldlt_.factorize(coarse_);
   if (coarse_ldlt_.info() != Eigen::Success || !(coarse_ldlt_.vectorD().minCoeff() > 0.0)) {
     info_ = Eigen::NumericalIssue;
     failure_ = "coarse (patch rigid motion) matrix has a pivot <= 0";
   }
 }
 
-void TwoLevelPreconditioner::coarse_matrix(const SpMat& A) {
+bool TwoLevelPreconditioner::coarse_matrix(const SpMat& A) {
   // C(a, b) = sum over i in a, j in b of P_i^T A_ij P_j. Row (i, d) of A times P gives, per
   // neighbouring aggregate b, q_b = sum_j,e A(3i+d, 3j+e) p(j, e); then C(a, b) += p(i, d) q_b^T.
   // Aggregates own contiguous rows, so they are filled in parallel without conflicts.
@@ -85,38 +85,26 @@ void TwoLevelPreconditioner::coarse_matrix(const SpMat& A) {
         q.clear();
         for (SpMat::InnerIterator it(A, 3 * i + d); it; ++it) {
           const Index j = it.col() / 3;
-          const int e = static_cast<int>(it.col() % 3), b = aggregate_of(j);
-          if (q.empty() || q.back().first != b) {
-            auto f = std::find_if(q.begin(), q.end(), [b](const auto& e2) { return e2.first == b; });
-            if (f == q.end()) {
-              q.emplace_back(b, Vec6::Zero());
-            } else {
-              std::iter_swap(f, q.end() - 1);
-            }
-          }
-          Vec6& qb = q.back().second;
-          const double v = it.value();
-          qb[e] += v;
-          qb.tail<3>() += v * arm_[j].cross(Vec3::Unit(e));
+          entry(q, aggregate_of(j)) += it.value() * prolongation_row(arm_[j], it.col() % 3);
         }
         const Vec6 p = prolongation_row(arm_[i], d);
-        for (const auto& [b, qb] : q) {
-          auto f = std::find_if(mine.begin(), mine.end(), [b](const auto& e2) { return e2.first == b; });
-          if (f == mine.end()) {
-            mine.emplace_back(b, Mat6::Zero());
-            f = mine.end() - 1;
-          }
-          f->second.noalias() += p * qb.transpose();
-        }
+        for (const auto& [b, qb] : q) entry(mine, b).noalias() += p * qb.transpose();
       }
   }
+  std::vector<std::pair<int, int>> pattern;
   std::vector<Eigen::Triplet<double>> trip;
   for (int a = 0; a < m; ++a)
-    for (const auto& [b, B] : blocks[a])
+    for (const auto& [b, B] : blocks[a]) {
+      pattern.emplace_back(a, b);
       for (int r = 0; r < 6; ++r)
         for (int c = 0; c < 6; ++c) trip.emplace_back(6 * a + r, 6 * b + c, B(r, c));
+    }
   coarse_.resize(6 * m, 6 * m);
   coarse_.setFromTriplets(trip.begin(), trip.end());
+  std::sort(pattern.begin(), pattern.end());
+  if (pattern == coarse_pattern_) return false;
+  coarse_pattern_ = std::move(pattern);
+  return true;
 }
 
 void TwoLevelPreconditioner::apply(const VecX& r, VecX& z) const {

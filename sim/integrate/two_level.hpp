@@ -58,7 +58,8 @@ class TwoLevelPreconditioner {
   int aggregate_nodes() const { return agg_; }
 
  private:
-  void coarse_matrix(const SpMat& A);
+  /// Assembles coarse_ = P^T A P; true when its block pattern differs from the last one.
+  bool coarse_matrix(const SpMat& A);
   /// First node of patch a (a = num_aggregates_ gives n_): runs of agg_ nodes, the last one
   /// also takes the remainder.
   Index first(int a) const { return a >= num_aggregates_ ? n_ : static_cast<Index>(a) * agg_; }
@@ -72,7 +73,7 @@ class TwoLevelPreconditioner {
   Eigen::Index n_ = 0;  // nodes
   std::vector<Vec3> arm_;          // r_i per node
   SpMatCol coarse_;
-  std::vector<std::pair<int, int>> coarse_pairs_;  // aggregate pairs of the analysed pattern
+  std::vector<std::pair<int, int>> coarse_pattern_;  // coupled patch pairs, sorted
   Eigen::SimplicialLDLT<SpMatCol> coarse_ldlt_;
   Eigen::ComputationInfo info_ = Eigen::Success;
   std::string failure_;

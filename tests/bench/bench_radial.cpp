@@ -12,8 +12,9 @@
 // hinges can fold through theta = pi, where the bending energy with a plastic rest curvature
 // jumps, and explicit steps then fail (measured at 12000 nodes, t = 1.08 s). `--variants short`
 // runs only explicit-only and the hybrid with block Jacobi 18 and with the two-level
-// preconditioner (two_level.hpp), `hybrid` only the two hybrids, `explicit` only explicit-only. `--warm-state FILE` keeps the
-// warm state at the first t0 on disk, so a second run skips the warm-up.
+// preconditioner (two_level.hpp), `hybrid` only the two hybrids, `explicit` only explicit-only.
+// `--warm-state FILE` keeps the warm state at the first t0 on disk (with the setup it was
+// integrated with), so a second run of the same setup skips the warm-up.
 // --cg-tol / --cg-tol-max set the CG tolerances of the timed hybrid variants (forcing.hpp; the
 // warm-up keeps the defaults), and each hybrid variant prints where its wall time went.
 // The mass is physical by default, as in the paper: the explicit step is bounded by the node
@@ -75,17 +76,7 @@ double integrate(const RadialSheet& su, const IntegratorSettings& st, State& s, 
   std::unique_ptr<SelfContact> contact = with_contact ? add_contact(su, model) : nullptr;
   Integrator integ(model, st);
   if (contact) integ.before_step = [&](const State& x) { return contact->update(x.x); };
-  StageContext ctx;
-  ctx.model = &model;
-  // The stage gives the sheet its imperfection when it begins: at t = 0 that is the state to
-  // integrate; a variant restarting from the warm state begins the stage (its wall, its force)
-  // on a scratch copy, so the warm state is not displaced a second time.
-  State scratch = s;
-  ctx.state = s.t == 0.0 ? &s : &scratch;
-  ctx.sheet = su.info;
-  ctx.t_begin = 0.0;
-  auto stage = StageRegistry::builtin().make(radial_stage_node(force), "bench", "stage");
-  stage->begin(ctx);
+  const auto stage = begin_radial_stage(su, model, s, force);
   if (contact) contact->update(s.x);
   model.rebuild_pattern();
   if (contact) contact->pairs->reset_stats();
@@ -144,8 +135,8 @@ int main(int argc, char** argv) {
                  "time the explicit-only variant on [t0, t0 + span] and scale to dt (0: all of dt)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--warm-state", warm_path,
-                 "HDF5 file of the warm state at the first t0: read if it holds this mesh at that "
-                 "time (the warm-up is skipped), else written after the warm-up");
+                 "HDF5 file of the warm state at the first t0: read if it holds this mesh, time "
+                 "and setup (the warm-up is skipped), else written after the warm-up");
   app.add_flag("--progress", progress, "print a line per tenth of each timed interval too (the "
                "warm-up always does)");
   CLI11_PARSE(app, argc, argv);
@@ -178,18 +169,10 @@ int main(int argc, char** argv) {
                              Variant{"hybrid, CG + incomplete Cholesky", "incomplete_cholesky", 18, false},
                              Variant{"hybrid, direct LDLT", "ldlt", 18, false}})
       variants.push_back(v);
-  const std::string warm_description = "bench_radial warm-up, hybrid block Jacobi 18, force " +
-                                       std::to_string(force) + (with_contact ? ", contact" : "") +
-                                       ", mass scale " + std::to_string(mass_scale);
+  const std::string setup = warm_description(force, with_contact, mass_scale);
   for (const double t0 : starts) {
-    std::string stored;
-    const bool first = t0 == starts.front();
-    if (auto w = first && !warm_path.empty()
-                     ? load_warm_state(warm_path, su.mesh.num_nodes(), t0, &stored)
-                     : std::nullopt) {
-      if (stored != warm_description)
-        std::printf("note: %s holds a state from another setup (%s)\n", warm_path.c_str(),
-                    stored.c_str());
+    const bool keep = t0 == starts.front() && !warm_path.empty();
+    if (auto w = keep ? load_warm_state(warm_path, su.mesh.num_nodes(), t0, setup) : std::nullopt) {
       s = std::move(*w);
       std::printf("warm state at t0 = %g s read from %s\ninterval [%g s, %g s]:\n", t0,
                   warm_path.c_str(), t0, t0 + dt);
@@ -197,7 +180,7 @@ int main(int argc, char** argv) {
       std::printf("warm-up (hybrid, block Jacobi 18) from t = %g s to t0 = %g s ...\n", s.t, t0);
       const double warm = integrate(su, settings_for("block_jacobi", 18, false), s, t0, nullptr,
                                     with_contact, force, true);
-      if (first && !warm_path.empty()) save_warm_state(warm_path, s, su.mesh.num_nodes(), warm_description);
+      if (keep) save_warm_state(warm_path, s, su.mesh.num_nodes(), setup);
       std::printf("  (%.1f s wall)\ninterval [%g s, %g s]:\n", warm, t0, t0 + dt);
     }
     std::printf("%-34s %10s %8s %8s %10s %10s %8s %9s\n", "variant", "wall [s]", "steps", "expl.",

@@ -38,12 +38,7 @@ int main(int argc, char** argv) {
   Integrator integ(model, st);
   if (contact) integ.before_step = [&](const State& x) { return contact->update(x.x); };
   State s = model.rest_state();
-  StageContext ctx;
-  ctx.model = &model;
-  ctx.state = &s;
-  ctx.sheet = su.info;
-  auto stage = StageRegistry::builtin().make(radial_stage_node(force), "diag", "stage");
-  stage->begin(ctx);
+  const auto stage = begin_radial_stage(su, model, s, force);
   if (contact) contact->update(s.x);
   model.rebuild_pattern();
 

@@ -45,6 +45,23 @@ inline YAML::Node radial_stage_node(double force) {
   return n;
 }
 
+/// Begins the radial confinement stage (begun at t = 0, `force` as radial_stage_node) on
+/// `model`, whose terms it extends. The stage gives the sheet its imperfection when it begins:
+/// at s.t = 0 that is the state to integrate; a restart from a warm state begins the stage (its
+/// wall, its force) on a scratch copy, so the warm state is not displaced a second time.
+inline std::unique_ptr<Stage> begin_radial_stage(const RadialSheet& su, SheetModel& model,
+                                                 State& s, double force) {
+  StageContext ctx;
+  ctx.model = &model;
+  State scratch = s;
+  ctx.state = s.t == 0.0 ? &s : &scratch;
+  ctx.sheet = su.info;
+  ctx.t_begin = 0.0;
+  auto stage = StageRegistry::builtin().make(radial_stage_node(force), "bench", "stage");
+  stage->begin(ctx);
+  return stage;
+}
+
 /// Self-contact as crumple-sim sets it up (sigma = max(h_eff, half an edge), fold barrier),
 /// added to `model`.
 inline std::unique_ptr<SelfContact> add_contact(const RadialSheet& su, SheetModel& model) {

@@ -7,11 +7,19 @@
 #include "sim/model/state.hpp"
 
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <string>
 
 namespace crumple {
+
+/// What a warm state was integrated with (bench_radial's warm-up: hybrid, block Jacobi 18); a
+/// state is reused only for the same setup.
+inline std::string warm_description(double force, bool contact, double mass_scale) {
+  return "bench_radial warm-up, hybrid block Jacobi 18, force " + std::to_string(force) +
+         (contact ? ", contact" : ", phantom sheet") + ", mass scale " + std::to_string(mass_scale);
+}
 
 inline void save_warm_state(const std::string& path, const State& s, std::int64_t nodes,
                             const std::string& description) {
@@ -29,15 +37,14 @@ inline void save_warm_state(const std::string& path, const State& s, std::int64_
   std::filesystem::rename(tmp, path);
 }
 
-/// The state in `path` if the file exists and holds `nodes` nodes at time t; nothing otherwise
-/// (a state for another mesh or time is not an error: the caller warms up afresh).
-inline std::optional<State> load_warm_state(const std::string& path, std::int64_t nodes,
-                                            double t, std::string* description = nullptr) {
-  if (!std::filesystem::exists(path)) return std::nullopt;
+// load_warm_state without the checks for a missing or unreadable file.
+inline std::optional<State> read_warm_state(const std::string& path, std::int64_t nodes,
+                                            double t, const std::string& description) {
   H5::H5File file(path, H5F_ACC_RDONLY);
   const H5::Group g = file.openGroup("state");
-  if (h5::attr_int(g, "nodes") != nodes || h5::attr_double(g, "t") != t) return std::nullopt;
-  if (description) *description = h5::attr_string(g, "description");
+  if (h5::attr_int(g, "nodes") != nodes || h5::attr_double(g, "t") != t ||
+      h5::attr_string(g, "description") != description)
+    return std::nullopt;
   State s;
   s.t = t;
   const auto x = h5::read_doubles(g, "x"), v = h5::read_doubles(g, "v"), p = h5::read_doubles(g, "p");
@@ -45,6 +52,23 @@ inline std::optional<State> load_warm_state(const std::string& path, std::int64_
   s.v = Eigen::Map<const VecX>(v.data(), static_cast<Eigen::Index>(v.size()));
   s.p = Eigen::Map<const VecX>(p.data(), static_cast<Eigen::Index>(p.size()));
   return s;
+}
+
+/// The state in `path` if the file exists and holds `nodes` nodes at time t from the setup
+/// `description`; nothing otherwise (another mesh, time or setup is not an error: the caller
+/// warms up afresh and overwrites the file). An unreadable file is reported on stderr and
+/// treated the same way.
+inline std::optional<State> load_warm_state(const std::string& path, std::int64_t nodes,
+                                            double t, const std::string& description) {
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  try {
+    return read_warm_state(path, nodes, t, description);
+  } catch (const H5::Exception& e) {
+    std::fprintf(stderr, "%s: not a readable warm state (%s)\n", path.c_str(), e.getCDetailMsg());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: not a readable warm state (%s)\n", path.c_str(), e.what());
+  }
+  return std::nullopt;
 }
 
 }  // namespace crumple
