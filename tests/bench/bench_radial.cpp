@@ -4,7 +4,8 @@
 // restarts from that same state and is timed over [t0, t0 + dt].
 //   bench_radial [--nodes 3000] [--t0 1 [3 ...]] [--dt 1] [--threads 2] [--mass-scale 1] [--force F]
 //                [--contact 1] [--variants all|short|hybrid|explicit] [--explicit-span S]
-//                [--cg-tol 1e-2] [--cg-tol-max 0.1] [--progress]
+//                [--explicit-samples K] [--cg-tol 1e-2] [--cg-tol-max 0.1] [--progress]
+//                [--warm-state FILE] [--save-end FILE]
 // With contact (the default) the sheet is self-avoiding as in crumple-sim (sites with sigma =
 // max(h_eff, half an edge) and the fold barrier), and the share of the wall time spent in
 // contact detection (grid searches) and response (force and Jacobian) is printed with the time
@@ -14,7 +15,10 @@
 // runs only explicit-only and the hybrid with block Jacobi 18 and with the two-level
 // preconditioner (two_level.hpp), `hybrid` only the two hybrids, `explicit` only explicit-only.
 // `--warm-state FILE` keeps the warm state at the first t0 on disk (with the setup it was
-// integrated with), so a second run of the same setup skips the warm-up.
+// integrated with), so a second run of the same setup skips the warm-up; a state from before t0
+// shortens it. `--save-end FILE` keeps the block-Jacobi-18 hybrid's state at the end of the
+// interval: a chain of runs (--t0 1 --save-end B; --t0 3 --warm-state B) reaches late intervals
+// at 12000 nodes without integrating [0, t0] in one sitting.
 // --cg-tol / --cg-tol-max set the CG tolerances of the timed hybrid variants (forcing.hpp; the
 // warm-up keeps the defaults), and each hybrid variant prints where its wall time went.
 // The mass is physical by default, as in the paper: the explicit step is bounded by the node
@@ -24,7 +28,9 @@
 // set by stability rather than by the motion (1000 nodes, [1, 2]: 387 to 638 s scaled from
 // tenths of a second against 442 and 517 s measured over the whole second); once the sheet is
 // in contact the step size varies with the events and a short span can miss them (time the
-// whole interval there: --explicit-span 0). A mass scale s makes explicit steps
+// whole interval there: --explicit-span 0). `--explicit-samples K` spreads K such spans evenly
+// over the interval, each started from the state the first hybrid variant reached there, so the
+// scaled figure sees the whole interval's stages rather than its first moments. A mass scale s makes explicit steps
 // sqrt(s) larger and the measured accelerations a / a_ref = m a lambda / ks s times larger for
 // the same motion, so the sheet rarely looks quasistatic: not the paper's regime.
 #include "protocols/integrator_stepper.hpp"
@@ -69,9 +75,12 @@ struct RunStats {
 };
 
 // Integrates `s` to t_end under the radial confinement stage (begun at t = 0). With
-// `progress`, prints a line per tenth of the interval (for the long warm-up).
+// `progress`, prints a line per tenth of the interval (for the long warm-up). With `snapshots`,
+// the interval is advanced in `samples` equal chunks (one integrator throughout: its step
+// history carries over, a chunk's end only clips one step) and the state at each start is kept.
 double integrate(const RadialSheet& su, const IntegratorSettings& st, State& s, double t_end,
-                 RunStats* out, bool with_contact, double force, bool progress = false) {
+                 RunStats* out, bool with_contact, double force, bool progress = false,
+                 std::vector<State>* snapshots = nullptr, int samples = 1) {
   SheetModel model(su.mesh, su.params);
   std::unique_ptr<SelfContact> contact = with_contact ? add_contact(su, model) : nullptr;
   Integrator integ(model, st);
@@ -82,8 +91,9 @@ double integrate(const RadialSheet& su, const IntegratorSettings& st, State& s, 
   if (contact) contact->pairs->reset_stats();
   const auto t0 = std::chrono::steady_clock::now();
   const double t_start = s.t;
-  const int chunks = progress ? 10 : 1;
+  const int chunks = snapshots && samples > 1 ? samples : progress ? 10 : 1;
   for (int k = 1; k <= chunks; ++k) {
+    if (snapshots) snapshots->push_back(s);
     integ.advance_to(s, k == chunks ? t_end : t_start + k * (t_end - t_start) / chunks);
     if (!progress) continue;
     const IntegratorSummary c = integ.summary();
@@ -101,6 +111,19 @@ double integrate(const RadialSheet& su, const IntegratorSettings& st, State& s, 
   return wall;
 }
 
+// Sums the counts and wall times of explicit-only samples (--explicit-samples).
+void add_sample(RunStats& total, const RunStats& one) {
+  IntegratorSummary& t = total.integ;
+  const IntegratorSummary& o = one.integ;
+  t.steps_implicit += o.steps_implicit, t.steps_explicit += o.steps_explicit;
+  t.rejected_error += o.rejected_error, t.rejected_newton += o.rejected_newton;
+  t.rejected_not_spd += o.rejected_not_spd, t.rejected_other += o.rejected_other;
+  total.contact.searches += one.contact.searches;
+  total.contact.search_seconds += one.contact.search_seconds;
+  total.contact.eval_seconds += one.contact.eval_seconds;
+  total.sites = one.sites;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -109,8 +132,9 @@ int main(int argc, char** argv) {
   std::vector<double> starts{1.0};
   double dt = 1.0, mass_scale = 1.0, force = 0.0, explicit_span = 0.0;
   double cg_tol = IntegratorSettings{}.cg_tol, cg_tol_max = IntegratorSettings{}.cg_tol_max;
+  int samples = 1;
   bool with_contact = true, progress = false;
-  std::string which = "all", warm_path;
+  std::string which = "all", warm_path, end_path;
   CLI::App app{"bench_radial: radial confinement, explicit-only against the hybrid integrator"};
   app.add_option("--nodes", nodes, "mesh nodes")->check(CLI::Range(50, 10000000));
   app.add_option("--t0", starts, "start(s) of the timed intervals (s), e.g. --t0 1 3; the warm-up "
@@ -134,14 +158,29 @@ int main(int argc, char** argv) {
   app.add_option("--explicit-span", explicit_span,
                  "time the explicit-only variant on [t0, t0 + span] and scale to dt (0: all of dt)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--explicit-samples", samples,
+                 "time explicit-only over this many spans of --explicit-span spread evenly over "
+                 "the interval, each from the state the first hybrid variant reached there, and "
+                 "scale their mean rate to dt")
+      ->check(CLI::Range(1, 1000));
   app.add_option("--warm-state", warm_path,
-                 "HDF5 file of the warm state at the first t0: read if it holds this mesh, time "
-                 "and setup (the warm-up is skipped), else written after the warm-up");
+                 "HDF5 file of the warm state at the first t0: read if it holds this mesh and "
+                 "setup at t0 (the warm-up is skipped) or before (the warm-up goes on from it), "
+                 "written after a warm-up");
+  app.add_option("--save-end", end_path,
+                 "HDF5 file for the state at the end of the (last) interval from the block-Jacobi "
+                 "18 hybrid at the default tolerances: a later --warm-state FILE --t0 T > that "
+                 "time warms up from it");
   app.add_flag("--progress", progress, "print a line per tenth of each timed interval too (the "
                "warm-up always does)");
   CLI11_PARSE(app, argc, argv);
   if (cg_tol > cg_tol_max) {
     std::fprintf(stderr, "bench_radial: --cg-tol %g exceeds --cg-tol-max %g\n", cg_tol, cg_tol_max);
+    return 2;
+  }
+  if (samples > 1 && (explicit_span <= 0 || which == "hybrid" || which == "explicit")) {
+    std::fprintf(stderr, "bench_radial: --explicit-samples needs --explicit-span > 0 and both the "
+                 "explicit-only and a hybrid variant (--variants all or short)\n");
     return 2;
   }
   std::sort(starts.begin(), starts.end());
@@ -161,7 +200,8 @@ int main(int argc, char** argv) {
   std::vector<Variant> variants{{"explicit only (RK4(3))", "cg", 18, true},
                                 {"hybrid, CG + block Jacobi 18", "block_jacobi", 18, false},
                                 {"hybrid, CG + two-level (18, 32)", "two_level", 18, false}};
-  if (which == "hybrid") variants.erase(variants.begin());
+  // Sampled explicit-only starts from states of the first hybrid's trajectory: it runs last.
+  if (which == "hybrid" || samples > 1) variants.erase(variants.begin());
   if (which == "explicit") variants.resize(1);
   if (which == "all")
     for (const Variant& v : {Variant{"hybrid, CG + block Jacobi 144", "block_jacobi", 144, false},
@@ -169,10 +209,18 @@ int main(int argc, char** argv) {
                              Variant{"hybrid, CG + incomplete Cholesky", "incomplete_cholesky", 18, false},
                              Variant{"hybrid, direct LDLT", "ldlt", 18, false}})
       variants.push_back(v);
+  if (samples > 1) variants.push_back({"explicit only (RK4(3))", "cg", 18, true});
   const std::string setup = warm_description(force, with_contact, mass_scale);
   for (const double t0 : starts) {
     const bool keep = t0 == starts.front() && !warm_path.empty();
-    if (auto w = keep ? load_warm_state(warm_path, su.mesh.num_nodes(), t0, setup) : std::nullopt) {
+    auto w = keep ? load_warm_state(warm_path, su.mesh.num_nodes(), t0, setup, true) : std::nullopt;
+    if (w && w->t < t0) {
+      // An earlier state of the same setup (e.g. a previous run's --save-end): warm up from it.
+      std::printf("warm state at t = %g s read from %s\n", w->t, warm_path.c_str());
+      s = std::move(*w);
+      w.reset();
+    }
+    if (w) {
       s = std::move(*w);
       std::printf("warm state at t0 = %g s read from %s\ninterval [%g s, %g s]:\n", t0,
                   warm_path.c_str(), t0, t0 + dt);
@@ -186,22 +234,53 @@ int main(int argc, char** argv) {
     std::printf("%-34s %10s %8s %8s %10s %10s %8s %9s\n", "variant", "wall [s]", "steps", "expl.",
                 "newton/st", "cg/newton", "rejects", "speed-up");
     double explicit_wall = 0;
+    std::vector<State> snapshots;  // along the first hybrid's trajectory (--explicit-samples)
+    std::vector<std::pair<const char*, double>> hybrid_walls;
     for (const Variant& v : variants) {
-      State w = s;
       RunStats rs;
       const double span = v.explicit_only && explicit_span > 0 ? std::min(explicit_span, dt) : dt;
+      const bool sampled = v.explicit_only && samples > 1;
       try {
         const IntegratorSettings st =
             settings_for(v.solver, v.block, v.explicit_only, cg_tol, cg_tol_max);
-        const double measured = integrate(su, st, w, t0 + span, &rs, with_contact, force, progress);
-        const double wall = measured * dt / span;
+        double measured = 0;
+        if (sampled) {
+          for (State w : snapshots) {
+            const double t_from = w.t;
+            RunStats one;
+            const double m = integrate(su, st, w, t_from + span, &one, with_contact, force);
+            std::printf("    explicit-only sample [%.4g, %.4g]: %.1f s wall, %ld steps (%.1f s "
+                        "scaled to dt)\n", t_from, w.t, m, one.integ.steps(), m * dt / span);
+            measured += m;
+            add_sample(rs, one);
+          }
+        } else {
+          State w = s;
+          const bool first_hybrid = !v.explicit_only && hybrid_walls.empty();
+          measured = integrate(su, st, w, t0 + span, &rs, with_contact, force, progress,
+                               first_hybrid && samples > 1 ? &snapshots : nullptr, samples);
+          // Block Jacobi 18 with the default tolerances: the warm-up's integrator, so its end
+          // state can seed a later run's warm-up.
+          if (first_hybrid && !end_path.empty() && v.block == 18 &&
+              std::string(v.solver) == "block_jacobi" && cg_tol == IntegratorSettings{}.cg_tol &&
+              cg_tol_max == IntegratorSettings{}.cg_tol_max) {
+            save_warm_state(end_path, w, su.mesh.num_nodes(), setup);
+            std::printf("    (state at t = %g s written to %s)\n", w.t, end_path.c_str());
+          }
+        }
+        const double covered = sampled ? span * double(snapshots.size()) : span;
+        const double wall = measured * dt / covered;
         if (v.explicit_only) explicit_wall = wall;
+        else hybrid_walls.emplace_back(v.name, wall);
         const IntegratorSummary& sum = rs.integ;
         std::printf("%-34s %10.1f %8ld %8ld %10.2f %10.1f %8ld", v.name, wall, sum.steps(),
                     sum.steps_explicit, sum.mean_newton_per_step(), sum.mean_cg_per_newton(),
                     sum.rejections());
         if (!v.explicit_only && explicit_wall > 0) std::printf(" %8.1fx", explicit_wall / wall);
-        if (span < dt)
+        if (sampled)
+          std::printf("   (scaled from %.1f s wall over %zu spans of %g s)", measured,
+                      snapshots.size(), span);
+        else if (span < dt)
           std::printf("   (scaled from %.1f s wall over [%g, %g])", measured, t0, t0 + span);
         std::printf("\n");
         if (sum.rejections() > 0)
@@ -224,5 +303,8 @@ int main(int argc, char** argv) {
         std::printf("%-34s failed: %s\n", v.name, e.what());
       }
     }
+    if (samples > 1 && explicit_wall > 0)
+      for (const auto& [name, wall] : hybrid_walls)
+        std::printf("speed-up of %s against explicit-only: %.1fx\n", name, explicit_wall / wall);
   }
 }

@@ -39,14 +39,16 @@ inline void save_warm_state(const std::string& path, const State& s, std::int64_
 
 // load_warm_state without the checks for a missing or unreadable file.
 inline std::optional<State> read_warm_state(const std::string& path, std::int64_t nodes,
-                                            double t, const std::string& description) {
+                                            double t, const std::string& description,
+                                            bool or_earlier) {
   H5::H5File file(path, H5F_ACC_RDONLY);
   const H5::Group g = file.openGroup("state");
-  if (h5::attr_int(g, "nodes") != nodes || h5::attr_double(g, "t") != t ||
+  const double t_file = h5::attr_double(g, "t");
+  if (h5::attr_int(g, "nodes") != nodes || !(t_file == t || (or_earlier && t_file < t)) ||
       h5::attr_string(g, "description") != description)
     return std::nullopt;
   State s;
-  s.t = t;
+  s.t = t_file;
   const auto x = h5::read_doubles(g, "x"), v = h5::read_doubles(g, "v"), p = h5::read_doubles(g, "p");
   s.x = Eigen::Map<const VecX>(x.data(), static_cast<Eigen::Index>(x.size()));
   s.v = Eigen::Map<const VecX>(v.data(), static_cast<Eigen::Index>(v.size()));
@@ -54,15 +56,17 @@ inline std::optional<State> read_warm_state(const std::string& path, std::int64_
   return s;
 }
 
-/// The state in `path` if the file exists and holds `nodes` nodes at time t from the setup
+/// The state in `path` if the file exists and holds `nodes` nodes at time t (or, with
+/// `or_earlier`, at any time before t: the caller warms up from there) from the setup
 /// `description`; nothing otherwise (another mesh, time or setup is not an error: the caller
 /// warms up afresh and overwrites the file). An unreadable file is reported on stderr and
 /// treated the same way.
 inline std::optional<State> load_warm_state(const std::string& path, std::int64_t nodes,
-                                            double t, const std::string& description) {
+                                            double t, const std::string& description,
+                                            bool or_earlier = false) {
   if (!std::filesystem::exists(path)) return std::nullopt;
   try {
-    return read_warm_state(path, nodes, t, description);
+    return read_warm_state(path, nodes, t, description, or_earlier);
   } catch (const H5::Exception& e) {
     std::fprintf(stderr, "%s: not a readable warm state (%s)\n", path.c_str(), e.getCDetailMsg());
   } catch (const std::exception& e) {
