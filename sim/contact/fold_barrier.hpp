@@ -16,7 +16,8 @@
 // each other, and K = ks sigma^2 is the scale of the contact energy (contact_potential.hpp).
 // With psi' = -sign(theta) theta' (hinge_geometry.hpp gives theta's gradient and Hessian):
 //     F = -E'(psi) grad psi,   Hx = E''(psi) grad theta grad theta^T - E'(psi) sign(theta) H(theta).
-// Hinges far from a complete fold cost one bend angle per evaluation.
+// Hinges far from a complete fold cost two cross products per evaluation (a test on cos theta
+// without the bend angle itself).
 #pragma once
 
 #include "sim/mesh/mesh.hpp"
@@ -46,13 +47,14 @@ class FoldBarrierTerm : public ForceTerm {
   std::vector<Index> active_hinges(const VecX& x) const;
 
  private:
-  /// (hinge, bend angle) of every hinge with psi < psi0 at x, ascending: one bend angle per
-  /// hinge, in parallel.
+  /// (hinge, bend angle) of every hinge with psi < psi0 at x, ascending: a test on cos theta
+  /// per hinge, in parallel, then the bend angle of those that pass.
   std::vector<std::pair<Index, double>> near_complete_folds(const VecX& x) const;
 
   const Mesh* mesh_;
   double K_;
   std::vector<double> psi0_;
+  std::vector<double> cos_onset_sq_;  ///< cos^2(psi0), slightly lowered (near_complete_folds)
   std::vector<std::array<BlockSlot, 16>> slots_;
 };
 

@@ -121,8 +121,11 @@ void Integrator::advance_to(State& s, double t_end) {
         hist_.counters.wall_before_step += omp_get_wtime() - wb;
         if (changed) hist_.fsal.resize(0);
       }
-      if (model_.rebuild_pattern()) newton_->bind();
       const bool implicit = hist_.mode == IntegrationMode::Implicit;
+      // Only the quasistatic step assembles Jacobians: explicit steps leave the pattern stale
+      // through contact changes (its rebuild, a sort of every coupled node pair and a rebind of
+      // every term, would otherwise follow each change of the candidate list).
+      if (implicit && model_.rebuild_pattern()) newton_->bind();
       h = std::min(hist_.h, t_end - s.t);
       // Avoid a sliver of a last step: split the remainder in two instead.
       if (t_end - s.t > h && t_end - s.t < 1.5 * h) h = 0.5 * (t_end - s.t);

@@ -16,7 +16,7 @@
 // preconditioner (two_level.hpp), `hybrid` only the two hybrids, `explicit` only explicit-only.
 // `--warm-state FILE` keeps the warm state at the first t0 on disk (with the setup it was
 // integrated with), so a second run of the same setup skips the warm-up; a state from before t0
-// shortens it. `--save-end FILE` keeps the block-Jacobi-18 hybrid's state at the end of the
+// (an interrupted warm-up leaves the last tenth it reached) shortens it. `--save-end FILE` keeps the block-Jacobi-18 hybrid's state at the end of the
 // interval: a chain of runs (--t0 1 --save-end B; --t0 3 --warm-state B) reaches late intervals
 // at 12000 nodes without integrating [0, t0] in one sitting.
 // --cg-tol / --cg-tol-max set the CG tolerances of the timed hybrid variants (forcing.hpp; the
@@ -45,6 +45,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -75,12 +76,12 @@ struct RunStats {
 };
 
 // Integrates `s` to t_end under the radial confinement stage (begun at t = 0). With
-// `progress`, prints a line per tenth of the interval (for the long warm-up). With `snapshots`,
-// the interval is advanced in `samples` equal chunks (one integrator throughout: its step
-// history carries over, a chunk's end only clips one step) and the state at each start is kept.
+// `progress`, prints a line per chunk. The interval is advanced in `chunks` equal pieces (0: ten
+// with `progress`, else one) by one integrator (its step history carries over; a chunk's end
+// only clips one step), and `at_chunk` sees the state at the start of each.
 double integrate(const RadialSheet& su, const IntegratorSettings& st, State& s, double t_end,
                  RunStats* out, bool with_contact, double force, bool progress = false,
-                 std::vector<State>* snapshots = nullptr, int samples = 1) {
+                 int chunks = 0, const std::function<void(const State&)>& at_chunk = {}) {
   SheetModel model(su.mesh, su.params);
   std::unique_ptr<SelfContact> contact = with_contact ? add_contact(su, model) : nullptr;
   Integrator integ(model, st);
@@ -91,9 +92,9 @@ double integrate(const RadialSheet& su, const IntegratorSettings& st, State& s, 
   if (contact) contact->pairs->reset_stats();
   const auto t0 = std::chrono::steady_clock::now();
   const double t_start = s.t;
-  const int chunks = snapshots && samples > 1 ? samples : progress ? 10 : 1;
+  if (chunks <= 0) chunks = progress ? 10 : 1;
   for (int k = 1; k <= chunks; ++k) {
-    if (snapshots) snapshots->push_back(s);
+    if (at_chunk) at_chunk(s);
     integ.advance_to(s, k == chunks ? t_end : t_start + k * (t_end - t_start) / chunks);
     if (!progress) continue;
     const IntegratorSummary c = integ.summary();
@@ -226,8 +227,13 @@ int main(int argc, char** argv) {
                   warm_path.c_str(), t0, t0 + dt);
     } else {
       std::printf("warm-up (hybrid, block Jacobi 18) from t = %g s to t0 = %g s ...\n", s.t, t0);
+      // The warm state file follows the warm-up tenth by tenth: an interrupted warm-up resumes
+      // from the last tenth reached (with a fresh integrator there).
+      const auto save = [&](const State& x) {
+        if (keep && x.t > 0) save_warm_state(warm_path, x, su.mesh.num_nodes(), setup);
+      };
       const double warm = integrate(su, settings_for("block_jacobi", 18, false), s, t0, nullptr,
-                                    with_contact, force, true);
+                                    with_contact, force, true, 10, save);
       if (keep) save_warm_state(warm_path, s, su.mesh.num_nodes(), setup);
       std::printf("  (%.1f s wall)\ninterval [%g s, %g s]:\n", warm, t0, t0 + dt);
     }
@@ -257,8 +263,12 @@ int main(int argc, char** argv) {
         } else {
           State w = s;
           const bool first_hybrid = !v.explicit_only && hybrid_walls.empty();
-          measured = integrate(su, st, w, t0 + span, &rs, with_contact, force, progress,
-                               first_hybrid && samples > 1 ? &snapshots : nullptr, samples);
+          const auto keep_state = [&](const State& x) { snapshots.push_back(x); };
+          if (first_hybrid && samples > 1)
+            measured = integrate(su, st, w, t0 + span, &rs, with_contact, force, progress, samples,
+                                 keep_state);
+          else
+            measured = integrate(su, st, w, t0 + span, &rs, with_contact, force, progress);
           // Block Jacobi 18 with the default tolerances: the warm-up's integrator, so its end
           // state can seed a later run's warm-up.
           if (first_hybrid && !end_path.empty() && v.block == 18 &&

@@ -108,3 +108,50 @@ TEST(FoldBarrier, FlatSheetFeelsNothing) {
   EXPECT_TRUE(term.active_hinges(s.x).empty());
   EXPECT_EQ(term.energy(s), 0.0);
 }
+
+// The active set comes from a test on cos(theta) without the bend angle (fold_barrier.cpp): it
+// must pick exactly the hinges whose opening pi - |theta| is below the onset, also within
+// rounding of the onset and on a randomly crumpled sheet.
+TEST(FoldBarrier, ActiveHingesAreThoseOpenedLessThanTheOnset) {
+  const auto brute = [](const Mesh& m, const FoldBarrierTerm& term, const VecX& x) {
+    std::vector<Index> out;
+    for (Index h = 0; h < m.num_hinges(); ++h) {
+      const auto& nd = m.hinges[h].nodes;
+      const double th = bend_angle(node(x, nd[0]), node(x, nd[1]), node(x, nd[2]), node(x, nd[3]));
+      if (M_PI - std::abs(th) < term.onset(h)) out.push_back(h);
+    }
+    return out;
+  };
+  const Mesh one = one_hinge();
+  FoldBarrierTerm t1(one, 2.0, 0.1);
+  int active = 0, idle = 0;
+  for (int k = -200; k <= 200; ++k) {
+    // Bend angles around the onset, 1e-10 rad apart near it, both signs.
+    const double off = std::copysign(1e-10 * std::pow(1.12, std::abs(k)), k);
+    for (double sgn : {1.0, -1.0}) {
+      VecX x = one.ref_flat();  // the wing of x3 turned about the hinge edge, no noise
+      const Index tip = one.hinges[0].nodes[3];
+      const double y = one.ref(1, tip), ang = sgn * (M_PI - t1.onset(0) + off);
+      x.segment<3>(3 * tip) = Vec3(one.ref(0, tip), y * std::cos(ang), y * std::sin(ang));
+      const auto got = t1.active_hinges(x);
+      EXPECT_EQ(got, brute(one, t1, x)) << k << " " << sgn;
+      (got.empty() ? idle : active)++;
+    }
+  }
+  EXPECT_GT(active, 100);
+  EXPECT_GT(idle, 100);
+
+  const Mesh m = grid_mesh(12, 12, 1.0, 1.0, 0.2, 5);
+  FoldBarrierTerm term(m, 1.0, 0.5 * m.mean_edge_length());
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> N(0.0, 0.7 * m.mean_edge_length());
+  std::size_t found = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    VecX x = m.ref_flat();
+    for (Index k = 0; k < x.size(); ++k) x[k] += N(rng);
+    const auto want = brute(m, term, x);
+    EXPECT_EQ(term.active_hinges(x), want) << trial;
+    found += want.size();
+  }
+  EXPECT_GT(found, 20u);  // the crumpled sheets do have nearly complete folds
+}

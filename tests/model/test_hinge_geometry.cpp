@@ -114,3 +114,30 @@ TEST(HingeGeometry, CurvatureWithoutTrigonometryMatchesTheAngle) {
     EXPECT_NEAR(hinge_curvature(x[0], x[1], x[2], x[3]), 2.0 * std::sin(0.5 * th), 1e-14);
   }
 }
+
+// The gradient-only path of bend_half_angle_derivatives (every force evaluation) computes the
+// same gradient and half angles as the path that also forms the Hessian (finite-difference
+// checked above through bend_angle_derivatives), and grad(theta) is that gradient.
+TEST(HingeGeometry, GradientOnlyPathMatchesTheHessianPath) {
+  std::mt19937_64 rng(4);
+  std::normal_distribution<double> N(0.0, 0.3);
+  std::vector<std::array<Vec3, 4>> cases{flat_hinge(), folded_hinge(2.9), folded_hinge(-1.1)};
+  for (int k = 0; k < 20; ++k) {
+    auto x = flat_hinge();
+    for (auto& p : x) p += Vec3(N(rng), N(rng), N(rng));
+    cases.push_back(x);
+  }
+  for (const auto& x : cases) {
+    Vec12 g1, g2, g3;
+    Mat12 H;
+    const HalfAngle a = bend_half_angle_derivatives(x[0], x[1], x[2], x[3], g1, nullptr);
+    const HalfAngle b = bend_half_angle_derivatives(x[0], x[1], x[2], x[3], g2, &H);
+    const double th = bend_angle_derivatives(x[0], x[1], x[2], x[3], g3, nullptr);
+    EXPECT_LE((g1 - g2).norm(), 1e-14 * g2.norm());
+    EXPECT_LE((g1 - g3).norm(), 1e-14 * g3.norm());
+    EXPECT_NEAR(a.sin_half, b.sin_half, 1e-15);
+    EXPECT_NEAR(a.cos_half, b.cos_half, 1e-15);
+    EXPECT_NEAR(a.sin_half, std::sin(0.5 * th), 1e-14);
+    EXPECT_NEAR(a.cos_half, std::cos(0.5 * th), 1e-14);
+  }
+}
