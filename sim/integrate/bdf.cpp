@@ -1,6 +1,7 @@
 // Variable-step BDF coefficients, predictor weights and error constant (bdf.hpp).
 #include "sim/integrate/bdf.hpp"
 
+#include <limits>
 #include <stdexcept>
 
 namespace crumple {
@@ -51,6 +52,17 @@ double bdf_error_factor(const std::vector<double>& times) {
   const double cp = prod_s * (t0 - times[s + 1]);
   const double cc = -prod_s / l0;
   return cc / (cp - cc);
+}
+
+double bdf_growth_limit(int order) {
+  // Ratios at which the extraneous roots on a constant-ratio grid have modulus 0.9 (bdf.hpp),
+  // rounded down.
+  switch (order) {
+    case 1: return std::numeric_limits<double>::infinity();
+    case 2: return 2.2;
+    case 3: return 1.5;
+    default: return 1.22;
+  }
 }
 
 }  // namespace crumple

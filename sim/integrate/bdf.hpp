@@ -36,4 +36,19 @@ std::vector<double> lagrange_weights(const std::vector<double>& nodes, double t)
 /// the predictor runs through times[1..s+1] (so times has s+2 entries, newest first).
 double bdf_error_factor(const std::vector<double>& times);
 
+/// Largest ratio h_new / h_old of consecutive steps for a step of order s (1..4; above 4 as 4).
+///
+/// Variable-step BDF is zero-stable only for bounded step ratios. On a grid whose ratio is a
+/// constant w the coefficients of eq. (23) are the same at every step, and for x' = 0 the
+/// recurrence x_{k+1} = -sum_j alpha_j x_{k+1-j} has, besides the root 1, s - 1 extraneous
+/// roots; they reach the unit circle at w = 1 + sqrt(2) (s = 2), (1 + sqrt(5)) / 2 (s = 3) and
+/// 1.2807 (s = 4). At w = 2, which the error controller allows, the largest extraneous root
+/// of BDF4 has modulus 2.8: each doubling step amplifies the Newton and rounding errors almost
+/// threefold. The limits below keep that modulus at or below 0.9 (w = 2.2, 1.5, 1.22; BDF1 has
+/// no extraneous root). Measured cause of the limit: at 12000 nodes the radial confinement, on
+/// its way back from an explicit phase, climbed to order 4 while doubling h, and the extraneous
+/// mode grew into a spurious snap (kinetic energy x 400 within 0.3 ms) that sent the hybrid
+/// back to the explicit mode, over and over.
+double bdf_growth_limit(int order);
+
 }  // namespace crumple

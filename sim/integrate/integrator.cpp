@@ -2,6 +2,8 @@
 // step log (integrator.hpp; paper §3.2-3.4).
 #include "sim/integrate/integrator.hpp"
 
+#include "sim/integrate/bdf.hpp"
+
 #include "sim/core/errors.hpp"
 
 #include <omp.h>
@@ -124,8 +126,9 @@ void Integrator::advance_to(State& s, double t_end) {
       const bool implicit = hist_.mode == IntegrationMode::Implicit;
       // Only the quasistatic step assembles Jacobians: explicit steps leave the pattern stale
       // through contact changes (its rebuild, a sort of every coupled node pair and a rebind of
-      // every term, would otherwise follow each change of the candidate list).
-      if (implicit && model_.rebuild_pattern()) newton_->bind();
+      // every term, would otherwise follow each change of the candidate list). The Newton
+      // system rebinds itself to a rebuilt pattern.
+      if (implicit) model_.rebuild_pattern();
       h = std::min(hist_.h, t_end - s.t);
       // Avoid a sliver of a last step: split the remainder in two instead.
       if (t_end - s.t > h && t_end - s.t < 1.5 * h) h = 0.5 * (t_end - s.t);
@@ -141,7 +144,12 @@ void Integrator::advance_to(State& s, double t_end) {
       }
       const double exponent = implicit ? 1.0 / (a.order + 1) : 0.25;
       if (a.ok && a.err <= 1.0) {
-        double fac = a.err > 0 ? 0.9 * std::pow(a.err, -exponent) : settings_.max_growth;
+        // The next quasistatic step's order (its history gains this step's point) bounds how
+        // much h may grow (bdf_growth_limit: zero-stability of variable-step BDF).
+        const int next_order = std::min(settings_.bdf_order, static_cast<int>(hist_.times.size()));
+        const double growth = implicit ? std::min(settings_.max_growth, bdf_growth_limit(next_order))
+                                       : settings_.max_growth;
+        double fac = a.err > 0 ? 0.9 * std::pow(a.err, -exponent) : growth;
         if (!implicit) {
           // Explicit steps are mostly limited by stability (the stiff in-plane springs), where
           // the elementary controller above oscillates about the limit and rejects about every
@@ -159,7 +167,7 @@ void Integrator::advance_to(State& s, double t_end) {
         // iteration over the target, shrink it beyond (the error estimate alone cannot see this).
         if (implicit && a.newton_iters > settings_.newton_target)
           fac = std::min(fac, a.newton_iters == settings_.newton_target + 1 ? 1.0 : 0.7);
-        hist_.h = std::clamp(h * std::min(fac, settings_.max_growth), settings_.h_min,
+        hist_.h = std::clamp(h * std::min(fac, growth), settings_.h_min,
                              settings_.h_max);
         break;
       }

@@ -15,6 +15,7 @@ ReducedNewton::ReducedNewton(const SheetModel& model, const PlasticLaw& law)
 void ReducedNewton::bind() {
   const Mesh& m = model_.mesh();
   const BlockPattern& pat = model_.pattern();
+  bound_serial_ = model_.pattern_serial();
   slots_.resize(m.num_hinges());
   for (Index h = 0; h < m.num_hinges(); ++h) {
     const auto& nd = m.hinges[h].nodes;
@@ -26,6 +27,7 @@ void ReducedNewton::bind() {
 void ReducedNewton::linearise(const State& s, double bh, const VecX& hx, const VecX& hp) {
   const Mesh& m = model_.mesh();
   const Index nh = m.num_hinges();
+  if (bound_serial_ != model_.pattern_serial()) bind();
   bh_ = bh;
   model_.forces(s, F_);
   model_.jacobians(s, J_, false);

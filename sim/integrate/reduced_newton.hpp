@@ -25,7 +25,8 @@ class ReducedNewton {
  public:
   ReducedNewton(const SheetModel& model, const PlasticLaw& law);
 
-  /// Recomputes the hinge slots; call after the model's pattern changed.
+  /// Recomputes the hinge slots. linearise() calls it when the model's pattern was rebuilt
+  /// since (SheetModel::pattern_serial), by the integrator or anyone else.
   void bind();
 
   /// Linearises at s (s.t is t_{k+1}); hx, hp are the history sums, bh = beta h.
@@ -49,6 +50,7 @@ class ReducedNewton {
   PlasticLaw law_;
   PatchColoring hinge_colors_;  // lock-free parallel rank-1 updates (edge_colors.hpp)
   std::vector<std::array<BlockSlot, 16>> slots_;
+  std::uint64_t bound_serial_ = 0;  // model_.pattern_serial() at the last bind()
   double bh_ = 0;
   Jacobians J_;
   SpMat A_;

@@ -57,6 +57,7 @@ bool SheetModel::rebuild_pattern() {
     changed = pairs != pairs_ || pattern_.num_nodes() != mesh_.num_nodes();
     if (changed) {
       pattern_ = BlockPattern(mesh_.num_nodes(), pairs);
+      ++pattern_serial_;
       pairs_ = std::move(pairs);
       for (auto& e : terms_) e.bound = false;
     }

@@ -44,6 +44,9 @@ class SheetModel {
   /// Recomputes the pattern from all terms' coupled pairs if it changed; returns true if so.
   bool rebuild_pattern();
   const BlockPattern& pattern() const { return pattern_; }
+  /// Counts the pattern's rebuilds: whoever keeps slots into it (ReducedNewton) compares this
+  /// with the value at its own bind, whoever called rebuild_pattern().
+  std::uint64_t pattern_serial() const { return pattern_serial_; }
 
   Energies energies(const State& s) const;  ///< kinetic energy uses params().mass
   /// Total force F(x, v, p) (3n), overwriting f.
@@ -70,6 +73,7 @@ class SheetModel {
   BlockPattern pattern_;
   std::vector<std::pair<Index, Index>> pairs_;  // the pairs the pattern was built from
   bool terms_changed_ = true;
+  std::uint64_t pattern_serial_ = 0;
 };
 
 }  // namespace crumple

@@ -298,8 +298,9 @@ int main(int argc, char** argv) {
                       sum.rejected_error, sum.rejected_newton, sum.rejected_not_spd,
                       sum.rejected_other);
         if (!v.explicit_only)
-          std::printf("    wall: implicit %.1f s (assembly %.1f, linear solves %.1f), explicit %.1f s\n",
-                      sum.wall_implicit, sum.wall_assembly, sum.wall_linear, sum.wall_explicit);
+          std::printf("    wall: implicit %.1f s (linear solves %.1f), explicit %.1f s; forces and "
+                      "Jacobians (both modes) %.1f s\n",
+                      sum.wall_implicit, sum.wall_linear, sum.wall_explicit, sum.wall_assembly);
         if (with_contact) {
           const ContactStats& c = rs.contact;
           std::printf("    %.3g ms per step; contact: detection %.1f%% (%zu searches, %.3g us per "

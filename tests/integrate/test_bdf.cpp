@@ -2,6 +2,7 @@
 // error constant, and the measured convergence order with fixed steps on a nonlinear ODE.
 #include "sim/integrate/bdf.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -122,4 +123,43 @@ TEST(Bdf, FixedStepConvergenceOrders) {
       EXPECT_NEAR(ratio, expect, 0.25 * expect);
     }
   }
+}
+
+// The step-growth limits (bdf_growth_limit) keep variable-step BDF zero-stable: on a grid of
+// constant ratio w the recurrence for x' = 0 has constant coefficients, and its extraneous
+// roots (all but the root 1) stay within 0.9 at w = limit, while BDF4 at w = 2 (the error
+// controller's own cap) has one of modulus about 2.8.
+TEST(Bdf, GrowthLimitsKeepTheExtraneousRootsInsideTheUnitCircle) {
+  const auto largest_extraneous = [](int s, double w) {
+    std::vector<double> t{0.0};
+    double h = 1.0;
+    for (int j = 0; j < s; ++j, h /= w) t.push_back(t.back() - h);
+    const BdfCoefficients c = bdf_coefficients(t);
+    // Companion matrix of x_{k+1} = -sum_j alpha_j x_{k+1-j}.
+    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(s, s);
+    for (int j = 0; j < s; ++j) C(0, j) = -c.alpha[j];
+    for (int j = 1; j < s; ++j) C(j, j - 1) = 1.0;
+    const Eigen::VectorXcd roots = C.eigenvalues();
+    double big = 0, nearest_one = 1e9;
+    int one = -1;
+    for (int j = 0; j < s; ++j)
+      if (std::abs(roots[j] - 1.0) < nearest_one) nearest_one = std::abs(roots[j] - 1.0), one = j;
+    EXPECT_LT(nearest_one, 1e-6);  // consistency: the root 1
+    for (int j = 0; j < s; ++j)
+      if (j != one) big = std::max(big, std::abs(roots[j]));
+    return big;
+  };
+  EXPECT_TRUE(std::isinf(bdf_growth_limit(1)));
+  for (int s = 2; s <= 4; ++s) {
+    const double w = bdf_growth_limit(s);
+    EXPECT_LE(largest_extraneous(s, w), 0.9) << s;
+    EXPECT_GT(largest_extraneous(s, w * 1.05), largest_extraneous(s, w)) << s;  // not slack
+    EXPECT_LT(largest_extraneous(s, 1.0), largest_extraneous(s, w)) << s;
+  }
+  EXPECT_GT(largest_extraneous(4, 2.0), 2.5);
+  EXPECT_GT(largest_extraneous(3, 2.0), 1.2);
+  // The marginal ratios: 1 + sqrt(2), the golden ratio, 1.2807.
+  EXPECT_NEAR(largest_extraneous(2, 1.0 + std::sqrt(2.0)), 1.0, 1e-6);
+  EXPECT_NEAR(largest_extraneous(3, 0.5 * (1.0 + std::sqrt(5.0))), 1.0, 1e-6);
+  EXPECT_NEAR(largest_extraneous(4, 1.2807), 1.0, 1e-3);
 }

@@ -3,6 +3,7 @@
 // memory, implicit -> explicit -> implicit switching, rejection of non-SPD steps, the
 // NumericalFailure path, and bit-for-bit resume from a stored history.
 #include "sim/core/errors.hpp"
+#include "sim/integrate/bdf.hpp"
 #include "sim/integrate/integrator.hpp"
 #include "tests/integrate/anchor_term.hpp"
 #include "tests/support/grid_mesh.hpp"
@@ -98,6 +99,26 @@ TEST(Integrator, QuasistaticRelaxationDecreasesEnergyToRest) {
   int max_order = 0;
   for (const auto& r : integ.log()) max_order = std::max(max_order, r.order);
   EXPECT_EQ(max_order, 4);
+}
+
+// Step control: consecutive quasistatic steps grow by at most the zero-stability limit of the
+// order that takes the larger step (bdf_growth_limit), also while the order climbs at the start.
+TEST(Integrator, QuasistaticStepsGrowWithinTheBdfStabilityLimits) {
+  SheetModel model(sheet(), params(1.0));
+  Integrator integ(model, no_switching(IntegrationMode::Implicit));
+  State s = stretched_and_bent(model);
+  integ.advance_to(s, 100.0);
+  const auto& log = integ.log();
+  int checked = 0, near_limit = 0;
+  for (std::size_t k = 1; k < log.size(); ++k) {
+    if (log[k].rejections > 0) continue;  // a retried step was cut, not grown
+    const double ratio = log[k].h / log[k - 1].h;
+    EXPECT_LE(ratio, bdf_growth_limit(log[k].order) * (1 + 1e-12)) << "step " << k;
+    ++checked;
+    near_limit += ratio > 0.95 * std::min(2.0, bdf_growth_limit(log[k].order));
+  }
+  EXPECT_GT(checked, 20);
+  EXPECT_GT(near_limit, 5);  // the limits are what holds the growth back
 }
 
 // Step control: an accepted quasistatic step that needed more Newton iterations than
