@@ -2,9 +2,8 @@
 // step log (integrator.hpp; paper §3.2-3.4).
 #include "sim/integrate/integrator.hpp"
 
-#include "sim/integrate/bdf.hpp"
-
 #include "sim/core/errors.hpp"
+#include "sim/integrate/bdf.hpp"
 
 #include <omp.h>
 

@@ -16,9 +16,10 @@
 // preconditioner (two_level.hpp), `hybrid` only the two hybrids, `explicit` only explicit-only.
 // `--warm-state FILE` keeps the warm state at the first t0 on disk (with the setup it was
 // integrated with), so a second run of the same setup skips the warm-up; a state from before t0
-// (an interrupted warm-up leaves the last tenth it reached) shortens it. `--save-end FILE` keeps the block-Jacobi-18 hybrid's state at the end of the
-// interval: a chain of runs (--t0 1 --save-end B; --t0 3 --warm-state B) reaches late intervals
-// at 12000 nodes without integrating [0, t0] in one sitting.
+// (an interrupted warm-up leaves the last tenth it reached) shortens it. `--save-end FILE`
+// keeps the block-Jacobi-18 hybrid's state at the end of the interval: a chain of runs
+// (--t0 1 --save-end B; --t0 3 --warm-state B) reaches late intervals at 12000 nodes without
+// integrating [0, t0] in one sitting.
 // --cg-tol / --cg-tol-max set the CG tolerances of the timed hybrid variants (forcing.hpp; the
 // warm-up keeps the defaults), and each hybrid variant prints where its wall time went.
 // The mass is physical by default, as in the paper: the explicit step is bounded by the node
@@ -28,11 +29,11 @@
 // set by stability rather than by the motion (1000 nodes, [1, 2]: 387 to 638 s scaled from
 // tenths of a second against 442 and 517 s measured over the whole second); once the sheet is
 // in contact the step size varies with the events and a short span can miss them (time the
-// whole interval there: --explicit-span 0). `--explicit-samples K` spreads K such spans evenly
-// over the interval, each started from the state the first hybrid variant reached there, so the
-// scaled figure sees the whole interval's stages rather than its first moments. A mass scale s makes explicit steps
-// sqrt(s) larger and the measured accelerations a / a_ref = m a lambda / ks s times larger for
-// the same motion, so the sheet rarely looks quasistatic: not the paper's regime.
+// whole interval there: --explicit-span 0). `--explicit-samples K` spreads K such spans evenly over
+// the interval, each started from the state the first hybrid variant reached there, so the scaled
+// figure sees the whole interval's stages rather than its first moments. A mass scale s makes
+// explicit steps sqrt(s) larger and the measured accelerations a / a_ref = m a lambda / ks s times
+// larger for the same motion, so the sheet rarely looks quasistatic: not the paper's regime.
 #include "protocols/integrator_stepper.hpp"
 #include "tests/bench/radial_sheet.hpp"
 #include "tests/bench/warm_state.hpp"
