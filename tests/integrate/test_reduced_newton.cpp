@@ -73,22 +73,35 @@ class TieTerm : public ForceTerm {
   std::array<BlockSlot, 4> slots_;
 };
 
+// A 4 x 4 sheet, its plastic law and the folded iterate both tests linearise at.
+struct FoldedSheet {
+  Mesh mesh = crumple::testing::grid_mesh(4, 4, 1.0, 1.0, 0.15, 7);
+  SheetModel model{mesh, tiny_params()};
+  PlasticLaw law{0.05, 0.3, 2.0, true};
+  State s = folded_iterate(model);
+};
+
+// Hinges outside the plastic dead band (their rank-1 blocks enter the matrix).
+int plastic_hinges(const ReducedNewton& rn) {
+  int active = 0;
+  for (Index h = 0; h < rn.dg_dc().size(); ++h) active += rn.dg_dc()[h] > 0;
+  return active;
+}
+
 }  // namespace
 
 TEST(ReducedNewton, EqualsDenseFullSystemSolve) {
-  const Mesh mesh = crumple::testing::grid_mesh(4, 4, 1.0, 1.0, 0.15, 7);
-  SheetModel model(mesh, tiny_params());
-  PlasticLaw law{0.05, 0.3, 2.0, true};
-  ReducedNewton rn(model, law);
-  const State s = folded_iterate(model);
+  FoldedSheet f;
+  const Mesh& mesh = f.mesh;
+  SheetModel& model = f.model;
+  const State& s = f.s;
+  ReducedNewton rn(model, f.law);
   const double bh = 0.05;
   VecX hx = -s.x + 0.01 * VecX::Random(s.x.size());  // history sums (arbitrary but fixed)
   VecX hp = -s.p + 0.01 * VecX::Random(s.p.size());
 
   rn.linearise(s, bh, hx, hp);
-  int active = 0;
-  for (Index h = 0; h < rn.dg_dc().size(); ++h) active += rn.dg_dc()[h] > 0;
-  ASSERT_GT(active, 3) << "the test needs hinges outside the dead band";
+  ASSERT_GT(plastic_hinges(rn), 3) << "the test needs hinges outside the dead band";
 
   LinearSolver direct(LinearSolverKind::DirectLDLT, 18, 1e-12, 100);
   VecX dx, dv, dp;
@@ -131,22 +144,18 @@ TEST(ReducedNewton, EqualsDenseFullSystemSolve) {
 // begin, after a stage added terms or switched contact) moves every block's slot: the next
 // linearisation must follow it, or the plastic blocks land in the wrong places.
 TEST(ReducedNewton, FollowsAPatternRebuiltElsewhere) {
-  const Mesh mesh = crumple::testing::grid_mesh(4, 4, 1.0, 1.0, 0.15, 7);
-  SheetModel model(mesh, tiny_params());
-  PlasticLaw law{0.05, 0.3, 2.0, true};
-  ReducedNewton rn(model, law);
-  const State s = folded_iterate(model);
-  const VecX hx = -s.x, hp = -s.p;
-  rn.linearise(s, 0.05, hx, hp);
+  FoldedSheet f;
+  ReducedNewton rn(f.model, f.law);
+  const VecX hx = -f.s.x, hp = -f.s.p;
+  rn.linearise(f.s, 0.05, hx, hp);
 
-  model.add_term(std::make_shared<TieTerm>(0, model.num_nodes() - 1, 3.0), TermKind::External);
-  ASSERT_TRUE(model.rebuild_pattern());
-  rn.linearise(s, 0.05, hx, hp);
-  ReducedNewton fresh(model, law);
-  fresh.linearise(s, 0.05, hx, hp);
-  int active = 0;
-  for (Index h = 0; h < fresh.dg_dc().size(); ++h) active += fresh.dg_dc()[h] > 0;
-  ASSERT_GT(active, 3) << "the test needs plastic blocks";
+  f.model.add_term(std::make_shared<TieTerm>(0, f.model.num_nodes() - 1, 3.0),
+                   TermKind::External);
+  ASSERT_TRUE(f.model.rebuild_pattern());
+  rn.linearise(f.s, 0.05, hx, hp);
+  ReducedNewton fresh(f.model, f.law);
+  fresh.linearise(f.s, 0.05, hx, hp);
+  ASSERT_GT(plastic_hinges(fresh), 3) << "the test needs plastic blocks";
   const SpMat diff = rn.matrix() - fresh.matrix();
   EXPECT_LT(diff.norm(), 1e-14 * fresh.matrix().norm());
 }
