@@ -21,8 +21,9 @@ class Wall {
  public:
   virtual ~Wall() = default;
   virtual std::string name() const = 0;
-  /// d, grad d, Hess d at x and time t.
-  virtual void distance(const Vec3& x, double t, double& d, Vec3& grad, Mat3& hess) const = 0;
+  /// d, grad d and, when hess is not null, Hess d at x and time t (forces and energies need
+  /// no Hessian, and building it for every node was a measurable part of an explicit step).
+  virtual void distance(const Vec3& x, double t, double& d, Vec3& grad, Mat3* hess) const = 0;
 };
 
 /// A quantity that moves linearly in time from v0 at t0 with rate `speed`, clamped at `target`
@@ -38,7 +39,7 @@ class PlaneWall : public Wall {
  public:
   PlaneWall(const Vec3& point, const Vec3& normal, LinearMotion offset = {});
   std::string name() const override { return "plane"; }
-  void distance(const Vec3& x, double t, double& d, Vec3& g, Mat3& H) const override;
+  void distance(const Vec3& x, double t, double& d, Vec3& g, Mat3* H) const override;
   double offset(double t) const { return offset_.at(t); }
 
  private:
@@ -52,7 +53,7 @@ class CylinderWall : public Wall {
  public:
   CylinderWall(const Vec3& point, const Vec3& axis, LinearMotion radius, bool inside);
   std::string name() const override { return "cylinder"; }
-  void distance(const Vec3& x, double t, double& d, Vec3& g, Mat3& H) const override;
+  void distance(const Vec3& x, double t, double& d, Vec3& g, Mat3* H) const override;
   double radius(double t) const { return radius_.at(t); }
 
  private:
@@ -69,7 +70,7 @@ class SphereWall : public Wall {
   SphereWall(const Vec3& center, LinearMotion radius, bool inside,
              const Vec3& direction = Vec3::UnitZ(), LinearMotion offset = {});
   std::string name() const override { return "sphere"; }
-  void distance(const Vec3& x, double t, double& d, Vec3& g, Mat3& H) const override;
+  void distance(const Vec3& x, double t, double& d, Vec3& g, Mat3* H) const override;
   double radius(double t) const { return radius_.at(t); }
 
  private:
@@ -88,7 +89,7 @@ class ConeWall : public Wall {
   ConeWall(const Vec3& apex, const Vec3& axis, double half_angle, bool inside,
            LinearMotion offset = {});
   std::string name() const override { return "cone"; }
-  void distance(const Vec3& x, double t, double& d, Vec3& g, Mat3& H) const override;
+  void distance(const Vec3& x, double t, double& d, Vec3& g, Mat3* H) const override;
 
  private:
   Vec3 apex_, a_;

@@ -31,16 +31,16 @@ WallTerm::WallTerm(std::shared_ptr<const Wall> wall, Index num_nodes, WallProfil
 
 namespace {
 // Node i's penetration of the wall: returns false when out of reach, else fills the profile's
-// U, F, dF at the penetration and the distance derivatives.
+// U, F, dF at the penetration and the distance's gradient (and Hessian if asked for).
 struct Contact {
   double U, F, dF;
   Vec3 g;
   Mat3 H;
 };
 bool touch(const Wall& wall, const WallProfile& prof, double range, const State& s, Index i,
-           Contact& c) {
+           Contact& c, bool with_hessian = false) {
   double d;
-  wall.distance(node(s.x, i), s.t, d, c.g, c.H);
+  wall.distance(node(s.x, i), s.t, d, c.g, with_hessian ? &c.H : nullptr);
   if (d >= range) return false;
   prof.eval(range - d, c.U, c.F, c.dF);
   return true;
@@ -71,7 +71,7 @@ void WallTerm::add_jacobians(const State& s, Jacobians& J) const {
   for (Index i = 0; i < n_; ++i) {
     // F = -dU/dd, so Hx = dF/dpen grad d grad d^T - F Hess d.
     Contact c;
-    if (touch(*wall_, profile_, range_, s, i, c))
+    if (touch(*wall_, profile_, range_, s, i, c, true))
       add_block(val, slots_[i], c.dF * c.g * c.g.transpose() - c.F * c.H);
   }
 }
@@ -94,8 +94,7 @@ double WallTerm::min_distance(const State& s) const {
   for (Index i = 0; i < n_; ++i) {
     double d;
     Vec3 g;
-    Mat3 H;
-    wall_->distance(node(s.x, i), s.t, d, g, H);
+    wall_->distance(node(s.x, i), s.t, d, g, nullptr);
     m = std::min(m, d);
   }
   return m;

@@ -12,26 +12,58 @@ BendingTerm::BendingTerm(const Mesh& mesh, double kb, Assembly assembly)
       kb_(kb),
       assembly_(assembly),
       hinge_colors_(color_hinges(mesh)),
-      tri_colors_(color_triangles(mesh)) {}
+      tri_colors_(color_triangles(mesh)) {
+  // T1 = (x0, x1, x2) and T2 = (x1, x0, x3) must be cyclic rotations of the mesh's triangles,
+  // so that the triangles' own normals are the wings' normals.
+  const auto rotation_of = [](const std::array<Index, 3>& tri, Index a, Index b, Index c) {
+    for (int k = 0; k < 3; ++k)
+      if (tri[k] == a && tri[(k + 1) % 3] == b && tri[(k + 2) % 3] == c) return true;
+    return false;
+  };
+  shared_frames_ = true;
+  for (const auto& hg : mesh.hinges) {
+    const auto& nd = hg.nodes;
+    if (!rotation_of(mesh.triangles[hg.tris[0]], nd[0], nd[1], nd[2]) ||
+        !rotation_of(mesh.triangles[hg.tris[1]], nd[1], nd[0], nd[3])) {
+      shared_frames_ = false;
+      break;
+    }
+  }
+}
 
 void BendingTerm::update_cache(const State& s) const {
-  const Index nh = mesh_->num_hinges();
+  const Index nh = mesh_->num_hinges(), nt = mesh_->num_triangles();
   cache_.resize(nh);
-#pragma omp parallel for schedule(static)
-  for (Index h = 0; h < nh; ++h) {
-    const auto& hg = mesh_->hinges[h];
-    const auto& nd = hg.nodes;
-    HingeCache& c = cache_[h];
-    const HalfAngle ha = bend_half_angle_derivatives(node(s.x, nd[0]), node(s.x, nd[1]),
-                                                     node(s.x, nd[2]), node(s.x, nd[3]), c.grad,
-                                                     nullptr);
-    const double sh = ha.sin_half, ch = ha.cos_half;
-    c.cos_half = ch;
-    c.c = 2.0 * sh;
-    const double k = kb_ * hg.rest_factor;
-    const double d = c.c - s.p[h];
-    c.zeta = k * d * ch;
-    c.xi = k * (ch * ch - 0.5 * d * sh);
+  if (shared_frames_) frames_.resize(nt);
+#pragma omp parallel
+  {
+    if (shared_frames_) {
+#pragma omp for schedule(static)
+      for (Index t = 0; t < nt; ++t) {
+        const auto& tri = mesh_->triangles[t];
+        frames_[t] = triangle_frame(node(s.x, tri[0]), node(s.x, tri[1]), node(s.x, tri[2]));
+      }
+    }
+#pragma omp for schedule(static)
+    for (Index h = 0; h < nh; ++h) {
+      const auto& hg = mesh_->hinges[h];
+      const auto& nd = hg.nodes;
+      HingeCache& c = cache_[h];
+      const Vec3 x0 = node(s.x, nd[0]), x1 = node(s.x, nd[1]), x2 = node(s.x, nd[2]),
+                 x3 = node(s.x, nd[3]);
+      const HalfAngle ha =
+          shared_frames_
+              ? bend_half_angle_gradient(x0, x1, x2, x3, frames_[hg.tris[0]],
+                                         frames_[hg.tris[1]], c.grad)
+              : bend_half_angle_derivatives(x0, x1, x2, x3, c.grad, nullptr);
+      const double sh = ha.sin_half, ch = ha.cos_half;
+      c.cos_half = ch;
+      c.c = 2.0 * sh;
+      const double k = kb_ * hg.rest_factor;
+      const double d = c.c - s.p[h];
+      c.zeta = k * d * ch;
+      c.xi = k * (ch * ch - 0.5 * d * sh);
+    }
   }
 }
 

@@ -44,6 +44,9 @@ class BendingTerm : public ForceTerm {
   void curvature_gradients(const VecX& x, VecX& c, std::vector<Vec12>& grad) const;
 
   double kb() const { return kb_; }
+  /// Whether the force path computes each triangle's normal once for all its hinges (an
+  /// oriented mesh) rather than once per hinge.
+  bool shares_triangle_frames() const { return shared_frames_; }
 
  private:
   struct HingeCache {
@@ -59,6 +62,11 @@ class BendingTerm : public ForceTerm {
   std::vector<std::array<BlockSlot, 16>> hinge_slots_;
   std::vector<std::array<BlockSlot, 9>> tri_slots_;
   mutable std::vector<HingeCache> cache_;
+  // Triangle normals of the latest update_cache, shared by the hinges of each triangle. Used
+  // when every hinge's T1 = (x0, x1, x2) and T2 = (x1, x0, x3) run as their mesh triangles do
+  // (a consistently oriented mesh, checked at construction).
+  bool shared_frames_ = false;
+  mutable std::vector<TriangleFrame> frames_;
 };
 
 }  // namespace crumple

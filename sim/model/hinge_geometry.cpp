@@ -128,6 +128,30 @@ HalfAngle bend_half_angle_derivatives(const Vec3& x0, const Vec3& x1, const Vec3
   return half_angle(t1.n, t2.n, x1 - x0);
 }
 
+TriangleFrame triangle_frame(const Vec3& x0, const Vec3& x1, const Vec3& x2) {
+  TriangleFrame f;
+  const Vec3 nv = (x1 - x0).cross(x2 - x0);
+  f.a2 = nv.norm();
+  f.n = nv / f.a2;
+  return f;
+}
+
+HalfAngle bend_half_angle_gradient(const Vec3& x0, const Vec3& x1, const Vec3& x2,
+                                   const Vec3& x3, const TriangleFrame& t1,
+                                   const TriangleFrame& t2, Vec12& grad) {
+  // The wings of the gradient-only path above with n and h = a2 / L taken from the frames;
+  // T2's edge is x0 - x1, so its foot parameter is (x3 - x1).(x0 - x1) / L^2.
+  const Vec3 e = x1 - x0;
+  const double l2 = e.squaredNorm(), l = std::sqrt(l2), il2 = 1.0 / l2;
+  const double ta = (x2 - x0).dot(e) * il2, tb = (x1 - x3).dot(e) * il2;
+  const double ia = l / t1.a2, ib = l / t2.a2;  // 1 / h of each wing
+  grad.segment<3>(0) = ((1.0 - ta) * ia) * t1.n + (tb * ib) * t2.n;
+  grad.segment<3>(3) = (ta * ia) * t1.n + ((1.0 - tb) * ib) * t2.n;
+  grad.segment<3>(6) = -ia * t1.n;
+  grad.segment<3>(9) = -ib * t2.n;
+  return half_angle(t1.n, t2.n, e);
+}
+
 double bend_angle_derivatives(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3,
                               Vec12& grad, Mat12* hess) {
   HalfHinge t1, t2;

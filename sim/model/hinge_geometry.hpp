@@ -54,6 +54,21 @@ struct HalfAngle {
 HalfAngle bend_half_angle_derivatives(const Vec3& x0, const Vec3& x1, const Vec3& x2,
                                       const Vec3& x3, Vec12& grad, Mat12* hess);
 
+/// Unit normal n = (x1 - x0) x (x2 - x0) / a2 and twice the area a2 of the triangle (x0, x1, x2).
+struct TriangleFrame {
+  Vec3 n;
+  double a2 = 0;
+};
+TriangleFrame triangle_frame(const Vec3& x0, const Vec3& x1, const Vec3& x2);
+
+/// The gradient-only bend_half_angle_derivatives from the frames of T1 = (x0, x1, x2) and
+/// T2 = (x1, x0, x3), each oriented as written. A mesh's triangle normals can then be computed
+/// once per force evaluation rather than once per hinge of the triangle (three for an interior
+/// one), and the hinge edge's length once rather than once per wing.
+HalfAngle bend_half_angle_gradient(const Vec3& x0, const Vec3& x1, const Vec3& x2,
+                                   const Vec3& x3, const TriangleFrame& t1,
+                                   const TriangleFrame& t2, Vec12& grad);
+
 /// theta, its gradient (12) and optionally its Hessian (12 x 12) for one hinge.
 double bend_angle_derivatives(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3,
                               Vec12& grad, Mat12* hess);

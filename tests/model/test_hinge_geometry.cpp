@@ -58,6 +58,18 @@ void check_derivatives(const std::array<Vec3, 4>& x) {
   EXPECT_LE((H - Hfd).norm(), 1e-6 * H.norm()) << "theta = " << th;
   EXPECT_LE((H - H.transpose()).norm(), 1e-10 * H.norm());
 }
+// The flat and two folded hinges, then 20 random perturbations of the flat one.
+std::vector<std::array<Vec3, 4>> sample_hinges(unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> N(0.0, 0.3);
+  std::vector<std::array<Vec3, 4>> cases{flat_hinge(), folded_hinge(2.9), folded_hinge(-1.1)};
+  for (int k = 0; k < 20; ++k) {
+    auto x = flat_hinge();
+    for (auto& p : x) p += Vec3(N(rng), N(rng), N(rng));
+    cases.push_back(x);
+  }
+  return cases;
+}
 }  // namespace
 
 TEST(HingeGeometry, SignConvention) {
@@ -119,15 +131,7 @@ TEST(HingeGeometry, CurvatureWithoutTrigonometryMatchesTheAngle) {
 // same gradient and half angles as the path that also forms the Hessian (finite-difference
 // checked above through bend_angle_derivatives), and grad(theta) is that gradient.
 TEST(HingeGeometry, GradientOnlyPathMatchesTheHessianPath) {
-  std::mt19937_64 rng(4);
-  std::normal_distribution<double> N(0.0, 0.3);
-  std::vector<std::array<Vec3, 4>> cases{flat_hinge(), folded_hinge(2.9), folded_hinge(-1.1)};
-  for (int k = 0; k < 20; ++k) {
-    auto x = flat_hinge();
-    for (auto& p : x) p += Vec3(N(rng), N(rng), N(rng));
-    cases.push_back(x);
-  }
-  for (const auto& x : cases) {
+  for (const auto& x : sample_hinges(4)) {
     Vec12 g1, g2, g3;
     Mat12 H;
     const HalfAngle a = bend_half_angle_derivatives(x[0], x[1], x[2], x[3], g1, nullptr);
@@ -139,5 +143,24 @@ TEST(HingeGeometry, GradientOnlyPathMatchesTheHessianPath) {
     EXPECT_NEAR(a.cos_half, b.cos_half, 1e-15);
     EXPECT_NEAR(a.sin_half, std::sin(0.5 * th), 1e-14);
     EXPECT_NEAR(a.cos_half, std::cos(0.5 * th), 1e-14);
+  }
+}
+
+// The gradient from precomputed triangle frames (BendingTerm's force path on an oriented mesh)
+// is the gradient-only path's, and a frame of the wrong orientation is not silently accepted.
+TEST(HingeGeometry, GradientFromTriangleFramesMatches) {
+  for (const auto& x : sample_hinges(9)) {
+    Vec12 g1, g2, g3;
+    const HalfAngle a = bend_half_angle_derivatives(x[0], x[1], x[2], x[3], g1, nullptr);
+    // T2's frame from a rotation of (x1, x0, x3): the frame depends only on the cyclic order.
+    const TriangleFrame t1 = triangle_frame(x[0], x[1], x[2]);
+    const TriangleFrame t2 = triangle_frame(x[3], x[1], x[0]);
+    const HalfAngle b = bend_half_angle_gradient(x[0], x[1], x[2], x[3], t1, t2, g2);
+    EXPECT_LE((g1 - g2).norm(), 1e-13 * g1.norm());
+    EXPECT_NEAR(a.sin_half, b.sin_half, 1e-14);
+    EXPECT_NEAR(a.cos_half, b.cos_half, 1e-14);
+    const TriangleFrame flipped = triangle_frame(x[0], x[1], x[3]);  // T2 listed backwards
+    bend_half_angle_gradient(x[0], x[1], x[2], x[3], t1, flipped, g3);
+    EXPECT_GT((g1 - g3).norm(), 1e-3 * g1.norm());
   }
 }

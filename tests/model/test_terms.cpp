@@ -238,3 +238,23 @@ TEST(ForceTerms, DashpotsSumToZeroAndAreTorqueFreeAtRestLength) {
   EXPECT_LE(net.norm(), 1e-12 * f.norm());
   EXPECT_LE(torque.norm(), 1e-12 * f.norm());
 }
+
+// A mesh with a triangle of the other orientation cannot share triangle normals between its
+// hinges; BendingTerm then takes the per-hinge path, and both paths give the same force.
+TEST(ForceTerms, BendingForceIsTheSameOnAMisorientedMesh) {
+  const Mesh& m = test_mesh();
+  Mesh flipped = m;  // same hinges, one triangle listed clockwise
+  std::swap(flipped.triangles[7][1], flipped.triangles[7][2]);
+  ASSERT_TRUE(BendingTerm(m, 0.7).shares_triangle_frames());
+  ASSERT_FALSE(BendingTerm(flipped, 0.7).shares_triangle_frames());
+  for (unsigned seed : {1u, 2u}) {
+    State s = random_state(m, seed, 0.05);
+    BendingTerm a(m, 0.7), b(flipped, 0.7);
+    VecX fa = VecX::Zero(s.x.size()), fb = VecX::Zero(s.x.size());
+    a.add_force(s, fa);
+    b.add_force(s, fb);
+    EXPECT_GT(fa.norm(), 1e-3);
+    EXPECT_LE((fa - fb).norm(), 1e-12 * fa.norm());
+    EXPECT_NEAR(a.energy(s), b.energy(s), 1e-12 * a.energy(s));
+  }
+}
