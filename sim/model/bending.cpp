@@ -20,24 +20,25 @@ BendingTerm::BendingTerm(const Mesh& mesh, double kb, Assembly assembly)
       if (tri[k] == a && tri[(k + 1) % 3] == b && tri[(k + 2) % 3] == c) return true;
     return false;
   };
-  shared_frames_ = true;
+  oriented_ = true;
   for (const auto& hg : mesh.hinges) {
     const auto& nd = hg.nodes;
     if (!rotation_of(mesh.triangles[hg.tris[0]], nd[0], nd[1], nd[2]) ||
         !rotation_of(mesh.triangles[hg.tris[1]], nd[1], nd[0], nd[3])) {
-      shared_frames_ = false;
+      oriented_ = false;
       break;
     }
   }
+  set_assembly(assembly);
 }
 
 void BendingTerm::update_cache(const State& s) const {
   const Index nh = mesh_->num_hinges(), nt = mesh_->num_triangles();
   cache_.resize(nh);
-  if (shared_frames_) frames_.resize(nt);
+  if (oriented_) frames_.resize(nt);
 #pragma omp parallel
   {
-    if (shared_frames_) {
+    if (oriented_) {
 #pragma omp for schedule(static)
       for (Index t = 0; t < nt; ++t) {
         const auto& tri = mesh_->triangles[t];
@@ -52,7 +53,7 @@ void BendingTerm::update_cache(const State& s) const {
       const Vec3 x0 = node(s.x, nd[0]), x1 = node(s.x, nd[1]), x2 = node(s.x, nd[2]),
                  x3 = node(s.x, nd[3]);
       const HalfAngle ha =
-          shared_frames_
+          oriented_
               ? bend_half_angle_gradient(x0, x1, x2, x3, frames_[hg.tris[0]],
                                          frames_[hg.tris[1]], c.grad)
               : bend_half_angle_derivatives(x0, x1, x2, x3, c.grad, nullptr);

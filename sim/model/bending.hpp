@@ -30,8 +30,11 @@ class BendingTerm : public ForceTerm {
   void coupled_pairs(std::vector<std::pair<Index, Index>>& out) const override;
   void bind(const BlockPattern& pattern) override;
 
+  /// The per-triangle assembly reads each half hinge in its triangle's own vertex order, so it
+  /// needs a consistently oriented mesh (build_mesh makes one); on any other mesh the term
+  /// assembles per hinge whatever was asked for.
   Assembly assembly() const { return assembly_; }
-  void set_assembly(Assembly a) { assembly_ = a; }
+  void set_assembly(Assembly a) { assembly_ = oriented_ ? a : Assembly::PerHinge; }
 
   /// Signed curvature c = 2 sin(theta/2) of every hinge (size n_hinges).
   void curvatures(const VecX& x, VecX& c) const;
@@ -46,7 +49,7 @@ class BendingTerm : public ForceTerm {
   double kb() const { return kb_; }
   /// Whether the force path computes each triangle's normal once for all its hinges (an
   /// oriented mesh) rather than once per hinge.
-  bool shares_triangle_frames() const { return shared_frames_; }
+  bool shares_triangle_frames() const { return oriented_; }
 
  private:
   struct HingeCache {
@@ -62,10 +65,10 @@ class BendingTerm : public ForceTerm {
   std::vector<std::array<BlockSlot, 16>> hinge_slots_;
   std::vector<std::array<BlockSlot, 9>> tri_slots_;
   mutable std::vector<HingeCache> cache_;
-  // Triangle normals of the latest update_cache, shared by the hinges of each triangle. Used
-  // when every hinge's T1 = (x0, x1, x2) and T2 = (x1, x0, x3) run as their mesh triangles do
-  // (a consistently oriented mesh, checked at construction).
-  bool shared_frames_ = false;
+  // Whether every hinge's T1 = (x0, x1, x2) and T2 = (x1, x0, x3) run as their mesh
+  // triangles do (a consistently oriented mesh, checked at construction). Then the force path
+  // shares each triangle's normal (frames_, of the latest update_cache) between its hinges.
+  bool oriented_ = false;
   mutable std::vector<TriangleFrame> frames_;
 };
 
