@@ -156,10 +156,10 @@ void BendingTerm::add_jacobians(const State& s, Jacobians& J) const {
       }
       if (!any) return;
       // dn for vertex v: n x (opposite edge, counter-clockwise) / 2A, the same for every edge.
+      // The triangle's frame from update_cache above (this assembly implies an oriented mesh).
       const Vec3 x0 = node(s.x, tri[0]), x1 = node(s.x, tri[1]), x2 = node(s.x, tri[2]);
-      const Vec3 nv = (x1 - x0).cross(x2 - x0);
-      const double a2 = nv.norm();
-      const Vec3 n = nv / a2;
+      const Vec3& n = frames_[t].n;
+      const double a2 = frames_[t].a2;
       const Vec3 dn[3] = {n.cross(x1 - x2) / a2, n.cross(x2 - x0) / a2, n.cross(x0 - x1) / a2};
       const auto& sl = tri_slots_[t];
       for (int a = 0; a < 3; ++a)

@@ -14,6 +14,12 @@ inline Mat3 spring_block(const Vec3& r, double s) {
   return (1.0 - s / l) * Mat3::Identity() + (s / (l * l * l)) * (r * r.transpose());
 }
 
+/// K(r) u without forming the block (the dashpots' force on every explicit step).
+inline Vec3 spring_block_times(const Vec3& r, double s, const Vec3& u) {
+  const double il = 1.0 / r.norm(), sil = s * il;
+  return (1.0 - sil) * u + (sil * il * il * r.dot(u)) * r;
+}
+
 class SpringTerm : public ForceTerm {
  public:
   SpringTerm(const Mesh& mesh, double ks);
