@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 namespace crumple {
@@ -29,19 +30,29 @@ ContactTerm::ContactTerm(const Mesh& mesh, const ContactSettings& settings)
   sites_ = build_contact_sites(mesh, settings_.level);
 }
 
-Vec3 ContactTerm::site_position(const VecX& x, Index s) const {
-  const ContactSite& c = sites_.sites[s];
-  Vec3 p = c.weights[0] * node(x, c.nodes[0]);
-  for (int k = 1; k < c.count; ++k) p += c.weights[k] * node(x, c.nodes[k]);
-  return p;
+inline Vec3 ContactTerm::separation(const VecX& x, Index p) const {
+  const PairStencil& st = stencil_[p];
+  // Site by site, as the sites' positions would be: r is a small difference of two points.
+  const Vec3 a = st.coef[0] * node(x, st.node[0]) + st.coef[1] * node(x, st.node[1]) +
+                 st.coef[2] * node(x, st.node[2]);
+  const Vec3 b = st.coef[3] * node(x, st.node[3]) + st.coef[4] * node(x, st.node[4]) +
+                 st.coef[5] * node(x, st.node[5]);
+  return a + b;
 }
 
-Index ContactTerm::role_node(Index p, int r) const {
-  return r < 3 ? sites_.sites[cand_[p][0]].nodes[r] : sites_.sites[cand_[p][1]].nodes[r - 3];
-}
-
-double ContactTerm::role_coef(Index p, int r) const {
-  return r < 3 ? sites_.sites[cand_[p][0]].weights[r] : -sites_.sites[cand_[p][1]].weights[r - 3];
+void ContactTerm::pair_forces(const VecX& x) const {
+  const Index m = static_cast<Index>(cand_.size());
+  f1_.resize(m);
+  active_.resize(m);
+  const double sigma2 = law_.sigma * law_.sigma;
+#pragma omp parallel for schedule(static)
+  for (Index p = 0; p < m; ++p) {
+    const Vec3 r = separation(x, p);
+    // The squared distance rejects the pairs outside the range without a square root.
+    const bool near = r.squaredNorm() < sigma2;
+    f1_[p] = near ? law_.force(r) : Vec3::Zero();
+    active_[p] = near;
+  }
 }
 
 bool ContactTerm::stale(const VecX& x) const {
@@ -95,13 +106,27 @@ void ContactTerm::search(const VecX& x) {
       rows_.push_back(i);
       row_start_.push_back(row_start_.back() + count[i + 1]);
     }
+  // The pairs' stencils (eq. 11-12): site 1's nodes with +w, site 2's with -w.
+  stencil_.resize(m);
+  for (Index p = 0; p < m; ++p)
+    for (int side = 0; side < 2; ++side) {
+      const ContactSite& s = sites_.sites[cand_[p][side]];
+      const double sign = side == 0 ? 1.0 : -1.0;
+      for (int k = 0; k < 3; ++k) {
+        stencil_[p].node[3 * side + k] = k < s.count ? s.nodes[k] : s.nodes[0];
+        stencil_[p].coef[3 * side + k] = k < s.count ? sign * s.weights[k] : 0.0;
+      }
+    }
   entries_.resize(row_start_.back());
+  entry_coef_.resize(row_start_.back());
   std::vector<int> fill(row_start_.begin(), row_start_.end() - 1);
   for (Index p = 0; p < m; ++p)
     for (int r = 0; r < 6; ++r) {
       const ContactSite& s = sites_.sites[cand_[p][r / 3]];
       if (r % 3 >= s.count) continue;
-      entries_[fill[row_of[s.nodes[r % 3]]]++] = p * 8 + r;
+      const int e = fill[row_of[s.nodes[r % 3]]]++;
+      entries_[e] = p * 8 + r;
+      entry_coef_[e] = stencil_[p].coef[r];
     }
 
   // The node pairs coupled across each candidate pair, for the pattern and change detection.
@@ -127,8 +152,7 @@ Index ContactTerm::num_active(const VecX& x) const {
 #pragma omp parallel for schedule(static) reduction(+ : active)
   for (Index p = 0; p < m; ++p) {
     double rho;
-    if (law_.in_range((site_position(x, cand_[p][0]) - site_position(x, cand_[p][1])).norm(), rho))
-      ++active;
+    if (law_.in_range(separation(x, p).norm(), rho)) ++active;
   }
   return active;
 }
@@ -145,27 +169,26 @@ struct ScopeTimer {
 double ContactTerm::energy(const State& s) const {
   const ScopeTimer timer{stats_.eval_seconds};
   const Index m = static_cast<Index>(cand_.size());
+  const double sigma2 = law_.sigma * law_.sigma;
   double e = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : e)
-  for (Index p = 0; p < m; ++p)
-    e += law_.energy((site_position(s.x, cand_[p][0]) - site_position(s.x, cand_[p][1])).norm());
+  for (Index p = 0; p < m; ++p) {
+    const double d2 = separation(s.x, p).squaredNorm();
+    if (d2 < sigma2) e += law_.energy(std::sqrt(d2));
+  }
   return e;
 }
 
 void ContactTerm::add_force(const State& s, VecX& f) const {
   const ScopeTimer timer{stats_.eval_seconds};
-  const Index m = static_cast<Index>(cand_.size());
-  std::vector<Vec3> F1(m);
-#pragma omp parallel for schedule(static)
-  for (Index p = 0; p < m; ++p)
-    F1[p] = law_.force(site_position(s.x, cand_[p][0]) - site_position(s.x, cand_[p][1]));
+  pair_forces(s.x);
   const Index nrows = static_cast<Index>(rows_.size());
 #pragma omp parallel for schedule(dynamic, 64)
   for (Index k = 0; k < nrows; ++k) {
     Vec3 fa = Vec3::Zero();
     for (int e = row_start_[k]; e < row_start_[k + 1]; ++e) {
       const Index p = entries_[e] / 8;
-      fa += role_coef(p, entries_[e] % 8) * F1[p];
+      if (active_[p]) fa += entry_coef_[e] * f1_[p];
     }
     f.segment<3>(3 * rows_[k]) += fa;
   }
@@ -180,7 +203,7 @@ void ContactTerm::add_jacobians(const State& s, Jacobians& J) const {
   std::vector<char> active(m);
 #pragma omp parallel for schedule(static)
   for (Index p = 0; p < m; ++p) {
-    const Vec3 r = site_position(s.x, cand_[p][0]) - site_position(s.x, cand_[p][1]);
+    const Vec3 r = separation(s.x, p);
     double rho;
     active[p] = law_.in_range(r.norm(), rho);
     if (active[p]) K[p] = law_.stiffness(r);
@@ -195,12 +218,12 @@ void ContactTerm::add_jacobians(const State& s, Jacobians& J) const {
     for (int e = row_start_[k]; e < row_start_[k + 1]; ++e) {
       const Index p = entries_[e] / 8;
       if (!active[p]) continue;
-      const double ca = role_coef(p, entries_[e] % 8);
+      const double ca = entry_coef_[e];
+      const PairStencil& st = stencil_[p];
       for (int r = 0; r < 6; ++r) {
-        const ContactSite& site = sites_.sites[cand_[p][r / 3]];
-        if (r % 3 >= site.count) continue;
+        if (st.coef[r] == 0.0) continue;  // a padded role adds nothing
         try {
-          add_block(val, pat.slot(a, site.nodes[r % 3]), (ca * role_coef(p, r)) * K[p]);
+          add_block(val, pat.slot(a, st.node[r]), (ca * st.coef[r]) * K[p]);
         } catch (const std::out_of_range&) {
           missing = true;
         }

@@ -17,12 +17,19 @@
 // parallel, then each node gathers the contributions of its pairs in pair order (a CSR from
 // nodes to pair stencils built at each search), so every matrix row and force entry is written
 // by one thread, in an order that does not depend on the number of threads.
+// Each search also flattens every candidate pair into a stencil of six nodes and signed weights
+// (eq. 11-12), so an evaluation reads node positions and weights from one contiguous record per
+// pair instead of two site records; a profile of explicit steps in dense contact (3000 nodes,
+// level 3) had the site lookups and the pair loop's square root as its top entries. Pairs are
+// screened on the squared distance, since most candidates lie outside sigma at any moment.
 #pragma once
 
 #include "sim/contact/contact_potential.hpp"
 #include "sim/contact/contact_sites.hpp"
 #include "sim/contact/pair_search.hpp"
 #include "sim/model/force_term.hpp"
+
+#include <array>
 
 namespace crumple {
 
@@ -75,24 +82,38 @@ class ContactTerm : public ForceTerm {
 
  private:
   void search(const VecX& x);
-  Vec3 site_position(const VecX& x, Index s) const;
-  // Pair p, stencil role r (0..2 site 1, 3..5 site 2): node and signed weight c_r.
-  Index role_node(Index p, int r) const;
-  double role_coef(Index p, int r) const;
+  /// Candidate pair flattened at the search: roles 0..2 are site 1's nodes with weights +w,
+  /// roles 3..5 site 2's with -w; a site with fewer than three nodes repeats its first node
+  /// with weight 0, which adds an exact zero.
+  struct PairStencil {
+    std::array<Index, 6> node;
+    std::array<double, 6> coef;
+  };
+  /// Separation r = x(site 1) - x(site 2) of candidate p, summed site by site. Forced inline:
+  /// GCC kept it a call returning through the stack, a fifth of the pair loop's time.
+  [[gnu::always_inline]] inline Vec3 separation(const VecX& x, Index p) const;
+  /// Fills f1_ with every candidate's force on its site 1 (zero out of range) and active_.
+  void pair_forces(const VecX& x) const;
 
   const Mesh* mesh_;
   ContactSettings settings_;
   ContactLaw law_;
   ContactSites sites_;
   std::vector<SitePair> cand_;
+  std::vector<PairStencil> stencil_;   // one per candidate pair
   VecX x_search_;                      // node positions at the last search (empty: none yet)
   std::vector<Index> rows_;            // nodes touched by some candidate pair, ascending
   std::vector<int> row_start_;         // CSR over rows_ into entries_
   std::vector<int> entries_;           // pair * 8 + role, in pair order
+  std::vector<double> entry_coef_;     // the signed weight of each entry's role
   std::vector<std::uint64_t> cross_;   // node pairs (a < b) across candidate pairs, sorted
   const BlockPattern* pattern_ = nullptr;
   std::uint64_t version_ = 0;
   mutable ContactStats stats_;  // eval_seconds is accrued in const evaluations
+  // Per-pair scratch of the evaluations, kept between calls to spare an allocation of the size
+  // of the candidate list per force evaluation (a term is evaluated by one caller at a time).
+  mutable std::vector<Vec3> f1_;
+  mutable std::vector<char> active_;
 };
 
 }  // namespace crumple

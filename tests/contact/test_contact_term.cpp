@@ -72,6 +72,42 @@ TEST(ContactTerm, FiniteDifferencesOnFoldedSheet) {
   EXPECT_LT(r.hx, 1e-6);
 }
 
+// The term's force and energy (pair stencils flattened at the search, screened on squared
+// distances) against the law applied site by site to every candidate pair, at every level.
+TEST(ContactTerm, EqualsTheLawSummedOverCandidatePairs) {
+  const Mesh m = grid_mesh(20, 20, 1.0, 1.0, 0.2, 8);
+  const double sigma = 0.7 * m.mean_edge_length();
+  for (int L = 0; L <= 3; ++L) {
+    ContactTerm term(m, {1.0, sigma, L, 0.3});
+    const State s = state_at(m, jiggle(fold_sheet(m, 0.5, 0.5 * sigma), 0.05 * sigma, 20 + L));
+    term.update(s.x);
+    ASSERT_GT(term.num_active(s.x), 10) << "level " << L;
+    ASSERT_GT(term.candidates().size(), static_cast<std::size_t>(term.num_active(s.x)));
+    VecX f_ref = VecX::Zero(s.x.size());
+    double e_ref = 0.0;
+    const ContactSites& sites = term.sites();
+    auto at = [&](Index site) {
+      Vec3 q = Vec3::Zero();
+      for (int k = 0; k < sites.sites[site].count; ++k)
+        q += sites.sites[site].weights[k] * node(s.x, sites.sites[site].nodes[k]);
+      return q;
+    };
+    for (const SitePair& pr : term.candidates()) {
+      const Vec3 r = at(pr[0]) - at(pr[1]);
+      e_ref += term.law().energy(r.norm());
+      const Vec3 F1 = term.law().force(r);
+      for (int side = 0; side < 2; ++side) {
+        const ContactSite& c = sites.sites[pr[side]];
+        for (int k = 0; k < c.count; ++k)
+          node(f_ref, c.nodes[k]) += (side == 0 ? c.weights[k] : -c.weights[k]) * F1;
+      }
+    }
+    ASSERT_GT(f_ref.norm(), 0.0);
+    EXPECT_LE((force_of(term, s) - f_ref).norm(), 1e-13 * f_ref.norm()) << "level " << L;
+    EXPECT_NEAR(term.energy(s), e_ref, 1e-13 * e_ref) << "level " << L;
+  }
+}
+
 TEST(ContactTerm, NoNetForceOrTorque) {
   const Mesh m = grid_mesh(30, 30, 1.0, 1.0, 0.2, 5);
   const double sigma = 0.5 * m.mean_edge_length();
