@@ -125,7 +125,7 @@ void ContactTerm::search(const VecX& x) {
       const ContactSite& s = sites_.sites[cand_[p][r / 3]];
       if (r % 3 >= s.count) continue;
       const int e = fill[row_of[s.nodes[r % 3]]]++;
-      entries_[e] = p * 8 + r;
+      entries_[e] = p;
       entry_coef_[e] = stencil_[p].coef[r];
     }
 
@@ -187,7 +187,7 @@ void ContactTerm::add_force(const State& s, VecX& f) const {
   for (Index k = 0; k < nrows; ++k) {
     Vec3 fa = Vec3::Zero();
     for (int e = row_start_[k]; e < row_start_[k + 1]; ++e) {
-      const Index p = entries_[e] / 8;
+      const Index p = entries_[e];
       if (active_[p]) fa += entry_coef_[e] * f1_[p];
     }
     f.segment<3>(3 * rows_[k]) += fa;
@@ -216,7 +216,7 @@ void ContactTerm::add_jacobians(const State& s, Jacobians& J) const {
   for (Index k = 0; k < nrows; ++k) {
     const Index a = rows_[k];
     for (int e = row_start_[k]; e < row_start_[k + 1]; ++e) {
-      const Index p = entries_[e] / 8;
+      const Index p = entries_[e];
       if (!active[p]) continue;
       const double ca = entry_coef_[e];
       const PairStencil& st = stencil_[p];

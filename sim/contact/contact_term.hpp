@@ -104,7 +104,7 @@ class ContactTerm : public ForceTerm {
   VecX x_search_;                      // node positions at the last search (empty: none yet)
   std::vector<Index> rows_;            // nodes touched by some candidate pair, ascending
   std::vector<int> row_start_;         // CSR over rows_ into entries_
-  std::vector<int> entries_;           // pair * 8 + role, in pair order
+  std::vector<int> entries_;           // the pair of each (node, role) entry, in pair order
   std::vector<double> entry_coef_;     // the signed weight of each entry's role
   std::vector<std::uint64_t> cross_;   // node pairs (a < b) across candidate pairs, sorted
   const BlockPattern* pattern_ = nullptr;
