@@ -88,25 +88,9 @@ void ContactTerm::search(const VecX& x) {
   stats_.last = found.stats;
   x_search_ = x;
 
-  // Node -> (pair, role) CSR, filled in pair order so that gathers are deterministic.
-  const Index n = mesh_->num_nodes();
+  // The pairs' stencils (eq. 11-12): site 1's nodes with +w, site 2's with -w. A real weight is
+  // never zero (contact_sites.hpp), so a zero coefficient marks a padded role below.
   const Index m = static_cast<Index>(cand_.size());
-  std::vector<int> count(n + 1, 0);
-  for (Index p = 0; p < m; ++p)
-    for (int side = 0; side < 2; ++side) {
-      const ContactSite& s = sites_.sites[cand_[p][side]];
-      for (int k = 0; k < s.count; ++k) ++count[s.nodes[k] + 1];
-    }
-  rows_.clear();
-  row_start_.assign(1, 0);
-  std::vector<int> row_of(n, -1);
-  for (Index i = 0; i < n; ++i)
-    if (count[i + 1] > 0) {
-      row_of[i] = static_cast<int>(rows_.size());
-      rows_.push_back(i);
-      row_start_.push_back(row_start_.back() + count[i + 1]);
-    }
-  // The pairs' stencils (eq. 11-12): site 1's nodes with +w, site 2's with -w.
   stencil_.resize(m);
   for (Index p = 0; p < m; ++p)
     for (int side = 0; side < 2; ++side) {
@@ -117,14 +101,29 @@ void ContactTerm::search(const VecX& x) {
         stencil_[p].coef[3 * side + k] = k < s.count ? sign * s.weights[k] : 0.0;
       }
     }
+
+  // Node -> (pair, role) CSR, filled in pair order so that gathers are deterministic.
+  const Index n = mesh_->num_nodes();
+  std::vector<int> count(n + 1, 0);
+  for (const PairStencil& st : stencil_)
+    for (int r = 0; r < 6; ++r)
+      if (st.coef[r] != 0.0) ++count[st.node[r] + 1];
+  rows_.clear();
+  row_start_.assign(1, 0);
+  std::vector<int> row_of(n, -1);
+  for (Index i = 0; i < n; ++i)
+    if (count[i + 1] > 0) {
+      row_of[i] = static_cast<int>(rows_.size());
+      rows_.push_back(i);
+      row_start_.push_back(row_start_.back() + count[i + 1]);
+    }
   entries_.resize(row_start_.back());
   entry_coef_.resize(row_start_.back());
   std::vector<int> fill(row_start_.begin(), row_start_.end() - 1);
   for (Index p = 0; p < m; ++p)
     for (int r = 0; r < 6; ++r) {
-      const ContactSite& s = sites_.sites[cand_[p][r / 3]];
-      if (r % 3 >= s.count) continue;
-      const int e = fill[row_of[s.nodes[r % 3]]]++;
+      if (stencil_[p].coef[r] == 0.0) continue;
+      const int e = fill[row_of[stencil_[p].node[r]]]++;
       entries_[e] = p;
       entry_coef_[e] = stencil_[p].coef[r];
     }
@@ -132,12 +131,11 @@ void ContactTerm::search(const VecX& x) {
   // The node pairs coupled across each candidate pair, for the pattern and change detection.
   cross_.clear();
   cross_.reserve(9 * static_cast<std::size_t>(m));
-  for (Index p = 0; p < m; ++p) {
-    const ContactSite& a = sites_.sites[cand_[p][0]];
-    const ContactSite& b = sites_.sites[cand_[p][1]];
-    for (int i = 0; i < a.count; ++i)
-      for (int j = 0; j < b.count; ++j) cross_.push_back(pair_key(a.nodes[i], b.nodes[j]));
-  }
+  for (const PairStencil& st : stencil_)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 3; b < 6; ++b)
+        if (st.coef[a] != 0.0 && st.coef[b] != 0.0)
+          cross_.push_back(pair_key(st.node[a], st.node[b]));
   std::sort(cross_.begin(), cross_.end());
   cross_.erase(std::unique(cross_.begin(), cross_.end()), cross_.end());
 
@@ -221,7 +219,7 @@ void ContactTerm::add_jacobians(const State& s, Jacobians& J) const {
       const double ca = entry_coef_[e];
       const PairStencil& st = stencil_[p];
       for (int r = 0; r < 6; ++r) {
-        if (st.coef[r] == 0.0) continue;  // a padded role adds nothing
+        if (st.coef[r] == 0.0) continue;  // a padded role
         try {
           add_block(val, pat.slot(a, st.node[r]), (ca * st.coef[r]) * K[p]);
         } catch (const std::out_of_range&) {
