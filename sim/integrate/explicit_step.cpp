@@ -1,5 +1,6 @@
 // One attempt of the explicit RK4(3) step over (x, v, p) (integrator.hpp; paper §3.4):
 // x' = v, v' = F / m, p' = g(c(x), p).
+#include "sim/core/parallel_assign.hpp"
 #include "sim/integrate/error_norm.hpp"
 #include "sim/integrate/integrator.hpp"
 #include "sim/integrate/rk43.hpp"
@@ -32,17 +33,21 @@ void Integrator::explicit_rhs(double t, const VecX& y, VecX& dy, State& sc) {
   const Index n3 = model_.num_dofs(), nh = model_.num_hinges();
   const double t0 = omp_get_wtime();
   sc.t = t;
-  sc.x = y.head(n3);
-  sc.v = y.segment(n3, n3);
-  sc.p = y.tail(nh);
-  VecX F, g, c;
+  parallel_assign(sc.x, y.head(n3));
+  parallel_assign(sc.v, y.segment(n3, n3));
+  parallel_assign(sc.p, y.tail(nh));
+  VecX F, g;
   model_.forces(sc, F);
-  if (law_.enabled) model_.bending().last_curvatures(c);  // of sc, cached by forces()
-  plastic_rate_from(c, sc.p, g);
+  // The curvatures of sc, kept by the bending force just evaluated.
+  if (law_.enabled)
+    plastic_rate_from(model_.bending().last_curvatures(), sc.p, g);
+  else
+    plastic_rate_from(VecX(), sc.p, g);
   dy.resize(y.size());
-  dy.head(n3) = sc.v;
-  dy.segment(n3, n3) = F / model_.params().mass;
-  dy.tail(nh) = g;
+  auto dx = dy.head(n3), dv = dy.segment(n3, n3), dp = dy.tail(nh);
+  parallel_assign(dx, sc.v);
+  parallel_assign(dv, F / model_.params().mass);
+  parallel_assign(dp, g);
   hist_.counters.wall_assembly += omp_get_wtime() - t0;
 }
 
@@ -50,14 +55,17 @@ void Integrator::explicit_attempt(const State& s, double h, Attempt& a) {
   const Index n3 = model_.num_dofs(), nh = model_.num_hinges();
   a.order = 4;
   VecX y(2 * n3 + nh);
-  y << s.x, s.v, s.p;
+  auto yx = y.head(n3), yv = y.segment(n3, n3), yp = y.tail(nh);
+  parallel_assign(yx, s.x);
+  parallel_assign(yv, s.v);
+  parallel_assign(yp, s.p);
   State scratch;
   auto f = [&](double t, const VecX& yy, VecX& dy) { explicit_rhs(t, yy, dy, scratch); };
-  VecX k1;
-  if (hist_.fsal.size() == y.size())
-    k1 = hist_.fsal;
-  else
-    f(s.t, y, k1);
+  // k1 is the previous step's last stage when there is one (read in place, not copied).
+  const bool fsal = hist_.fsal.size() == y.size();
+  VecX k1_fresh;
+  if (!fsal) f(s.t, y, k1_fresh);
+  const VecX& k1 = fsal ? hist_.fsal : k1_fresh;
   VecX y4, y3, k5;
   rk43_step(f, s.t, y, h, k1, y4, y3, k5);
 
@@ -90,9 +98,9 @@ void Integrator::explicit_attempt(const State& s, double h, Attempt& a) {
                     static_cast<double>(y.size()));
   a.a_ratio = amax / a_ref_;
   a.next.t = s.t + h;
-  a.next.x = y4.head(n3);
-  a.next.v = y4.segment(n3, n3);
-  a.next.p = y4.tail(nh);
+  parallel_assign(a.next.x, y4.head(n3));
+  parallel_assign(a.next.v, y4.segment(n3, n3));
+  parallel_assign(a.next.p, y4.tail(nh));
   a.fsal = std::move(k5);
 }
 

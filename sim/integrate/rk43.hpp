@@ -15,6 +15,8 @@
 // local error of order h^4 (tests/integrate/test_rk43.cpp checks all conditions).
 #pragma once
 
+#include "sim/core/parallel_assign.hpp"
+
 #include <array>
 
 namespace crumple {
@@ -36,15 +38,15 @@ struct Rk43Tableau {
 template <class F, class Y>
 void rk43_step(F&& f, double t, const Y& y, double h, const Y& k1, Y& y4, Y& y3, Y& k5) {
   Y k2, k3, k4, tmp;
-  tmp = y + (0.5 * h) * k1;
+  parallel_assign(tmp, y + (0.5 * h) * k1);
   f(t + 0.5 * h, tmp, k2);
-  tmp = y + (0.5 * h) * k2;
+  parallel_assign(tmp, y + (0.5 * h) * k2);
   f(t + 0.5 * h, tmp, k3);
-  tmp = y + h * k3;
+  parallel_assign(tmp, y + h * k3);
   f(t + h, tmp, k4);
-  y4 = y + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  parallel_assign(y4, y + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4));
   f(t + h, y4, k5);
-  y3 = y4 + (h / 6.0) * (k5 - k4);
+  parallel_assign(y3, y4 + (h / 6.0) * (k5 - k4));
 }
 
 }  // namespace crumple

@@ -32,39 +32,42 @@ BendingTerm::BendingTerm(const Mesh& mesh, double kb, Assembly assembly)
   set_assembly(assembly);
 }
 
+void BendingTerm::update_frames(const VecX& x) const {
+  const Index nt = mesh_->num_triangles();
+  frames_.resize(nt);
+#pragma omp parallel for schedule(static)
+  for (Index t = 0; t < nt; ++t) {
+    const auto& tri = mesh_->triangles[t];
+    frames_[t] = triangle_frame(node(x, tri[0]), node(x, tri[1]), node(x, tri[2]));
+  }
+}
+
+HalfAngle BendingTerm::hinge_gradient(const VecX& x, Index h, Vec12& grad) const {
+  const auto& hg = mesh_->hinges[h];
+  const auto& nd = hg.nodes;
+  const Vec3 x0 = node(x, nd[0]), x1 = node(x, nd[1]), x2 = node(x, nd[2]), x3 = node(x, nd[3]);
+  return oriented_ ? bend_half_angle_gradient(x0, x1, x2, x3, frames_[hg.tris[0]],
+                                              frames_[hg.tris[1]], grad)
+                   : bend_half_angle_derivatives(x0, x1, x2, x3, grad, nullptr);
+}
+
 void BendingTerm::update_cache(const State& s) const {
-  const Index nh = mesh_->num_hinges(), nt = mesh_->num_triangles();
+  const Index nh = mesh_->num_hinges();
   cache_.resize(nh);
-  if (oriented_) frames_.resize(nt);
-#pragma omp parallel
-  {
-    if (oriented_) {
-#pragma omp for schedule(static)
-      for (Index t = 0; t < nt; ++t) {
-        const auto& tri = mesh_->triangles[t];
-        frames_[t] = triangle_frame(node(s.x, tri[0]), node(s.x, tri[1]), node(s.x, tri[2]));
-      }
-    }
-#pragma omp for schedule(static)
-    for (Index h = 0; h < nh; ++h) {
-      const auto& hg = mesh_->hinges[h];
-      const auto& nd = hg.nodes;
-      HingeCache& c = cache_[h];
-      const Vec3 x0 = node(s.x, nd[0]), x1 = node(s.x, nd[1]), x2 = node(s.x, nd[2]),
-                 x3 = node(s.x, nd[3]);
-      const HalfAngle ha =
-          oriented_
-              ? bend_half_angle_gradient(x0, x1, x2, x3, frames_[hg.tris[0]],
-                                         frames_[hg.tris[1]], c.grad)
-              : bend_half_angle_derivatives(x0, x1, x2, x3, c.grad, nullptr);
-      const double sh = ha.sin_half, ch = ha.cos_half;
-      c.cos_half = ch;
-      c.c = 2.0 * sh;
-      const double k = kb_ * hg.rest_factor;
-      const double d = c.c - s.p[h];
-      c.zeta = k * d * ch;
-      c.xi = k * (ch * ch - 0.5 * d * sh);
-    }
+  curvature_.resize(nh);
+  if (oriented_) update_frames(s.x);
+#pragma omp parallel for schedule(static)
+  for (Index h = 0; h < nh; ++h) {
+    HingeCache& c = cache_[h];
+    const HalfAngle ha = hinge_gradient(s.x, h, c.grad);
+    const double sh = ha.sin_half, ch = ha.cos_half;
+    c.cos_half = ch;
+    c.c = 2.0 * sh;
+    curvature_[h] = c.c;
+    const double k = kb_ * mesh_->hinges[h].rest_factor;
+    const double d = c.c - s.p[h];
+    c.zeta = k * d * ch;
+    c.xi = k * (ch * ch - 0.5 * d * sh);
   }
 }
 
@@ -84,11 +87,20 @@ double BendingTerm::energy(const State& s) const {
 }
 
 void BendingTerm::add_force(const State& s, VecX& f) const {
-  update_cache(s);
+  // The force needs only zeta grad(theta) once per hinge: computed where it is scattered, it is
+  // never written to and read back from the hinge cache (128 bytes per hinge), which the
+  // Jacobians alone need. The curvatures are kept for last_curvatures().
+  const Index nh = mesh_->num_hinges();
+  curvature_.resize(nh);
+  if (oriented_) update_frames(s.x);
   for_each_colored(hinge_colors_, [&](Index h) {
-    const auto& nd = mesh_->hinges[h].nodes;
-    const HingeCache& c = cache_[h];
-    for (int a = 0; a < 4; ++a) f.segment<3>(3 * nd[a]) -= c.zeta * c.grad.segment<3>(3 * a);
+    const auto& hg = mesh_->hinges[h];
+    Vec12 grad;
+    const HalfAngle ha = hinge_gradient(s.x, h, grad);
+    const double c = 2.0 * ha.sin_half;
+    curvature_[h] = c;
+    const double zeta = kb_ * hg.rest_factor * (c - s.p[h]) * ha.cos_half;
+    for (int a = 0; a < 4; ++a) f.segment<3>(3 * hg.nodes[a]) -= zeta * grad.segment<3>(3 * a);
   });
 }
 
@@ -195,12 +207,7 @@ void BendingTerm::add_jacobians(const State& s, Jacobians& J) const {
   }
 }
 
-void BendingTerm::last_curvatures(VecX& c) const {
-  const Index nh = static_cast<Index>(cache_.size());
-  c.resize(nh);
-#pragma omp parallel for schedule(static)
-  for (Index h = 0; h < nh; ++h) c[h] = cache_[h].c;
-}
+const VecX& BendingTerm::last_curvatures() const { return curvature_; }
 
 void BendingTerm::curvatures(const VecX& x, VecX& c) const {
   const Index nh = mesh_->num_hinges();

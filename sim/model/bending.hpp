@@ -38,11 +38,11 @@ class BendingTerm : public ForceTerm {
 
   /// Signed curvature c = 2 sin(theta/2) of every hinge (size n_hinges).
   void curvatures(const VecX& x, VecX& c) const;
-  /// The curvatures of the state of the latest add_force (or add_jacobians with Hp) call, from
-  /// the hinge cache. The explicit right-hand side needs c for the plastic rate of the very
-  /// state whose force it has just evaluated; recomputing it (curvatures()) took about 15 % of
-  /// an explicit step at 12000 nodes.
-  void last_curvatures(VecX& c) const;
+  /// The curvatures of the state of the latest add_force (or add_jacobians with Hp) call.
+  /// The explicit right-hand side needs c for the plastic rate of the very state whose force it
+  /// has just evaluated; recomputing it (curvatures()) took about 15 % of an explicit step at
+  /// 12000 nodes.
+  const VecX& last_curvatures() const;
   /// c and its gradient (12 entries over the hinge's nodes x0..x3) for every hinge.
   void curvature_gradients(const VecX& x, VecX& c, std::vector<Vec12>& grad) const;
 
@@ -56,7 +56,13 @@ class BendingTerm : public ForceTerm {
     double cos_half, c, zeta, xi;
     Vec12 grad;  // d theta / dx over the hinge's 4 nodes
   };
+  /// Every hinge's cache, of the Jacobians (and the curvatures).
   void update_cache(const State& s) const;
+  /// frames_ at x (oriented meshes).
+  void update_frames(const VecX& x) const;
+  /// theta's gradient of hinge h at x and its half-angle sine and cosine; on an oriented mesh
+  /// from frames_, which must be those of x.
+  HalfAngle hinge_gradient(const VecX& x, Index h, Vec12& grad) const;
 
   const Mesh* mesh_;
   double kb_;
@@ -65,9 +71,10 @@ class BendingTerm : public ForceTerm {
   std::vector<std::array<BlockSlot, 16>> hinge_slots_;
   std::vector<std::array<BlockSlot, 9>> tri_slots_;
   mutable std::vector<HingeCache> cache_;
+  mutable VecX curvature_;  ///< c of every hinge at the latest force or Jacobian evaluation
   // Whether every hinge's T1 = (x0, x1, x2) and T2 = (x1, x0, x3) run as their mesh
   // triangles do (a consistently oriented mesh, checked at construction). Then the force path
-  // shares each triangle's normal (frames_, of the latest update_cache) between its hinges.
+  // shares each triangle's normal (frames_, of the latest evaluation) between its hinges.
   bool oriented_ = false;
   mutable std::vector<TriangleFrame> frames_;
 };

@@ -134,9 +134,9 @@ TEST(ForceTerms, LastCurvaturesAreThoseOfTheLatestForce) {
   BendingTerm b(m, 1.0);
   for (unsigned seed : {4u, 5u}) {
     const State s = random_state(m, seed, 0.08);
-    VecX f = VecX::Zero(s.x.size()), c_cache, c;
+    VecX f = VecX::Zero(s.x.size()), c;
     b.add_force(s, f);
-    b.last_curvatures(c_cache);
+    const VecX c_cache = b.last_curvatures();
     b.curvatures(s.x, c);
     ASSERT_EQ(c_cache.size(), m.num_hinges());
     EXPECT_LT((c_cache - c).cwiseAbs().maxCoeff(), 1e-14) << "seed " << seed;
