@@ -3,7 +3,8 @@
 // integrated once to t0; every variant (explicit only, hybrid with each linear solver) then
 // restarts from that same state and is timed over [t0, t0 + dt].
 //   bench_radial [--nodes 3000] [--t0 1 [3 ...]] [--dt 1] [--threads 2] [--mass-scale 1] [--force F]
-//                [--contact 1] [--variants all|short|hybrid|explicit] [--explicit-span S]
+//                [--contact 1] [--variants all|short|block-jacobi|hybrid|explicit]
+//                [--explicit-span S]
 //                [--explicit-samples K] [--cg-tol 1e-2] [--cg-tol-max 0.1] [--progress]
 //                [--warm-state FILE] [--save-end FILE]
 // With contact (the default) the sheet is self-avoiding as in crumple-sim (sites with sigma =
@@ -13,7 +14,8 @@
 // hinges can fold through theta = pi, where the bending energy with a plastic rest curvature
 // jumps, and explicit steps then fail (measured at 12000 nodes, t = 1.08 s). `--variants short`
 // runs only explicit-only and the hybrid with block Jacobi 18 and with the two-level
-// preconditioner (two_level.hpp), `hybrid` only the two hybrids, `explicit` only explicit-only.
+// preconditioner (two_level.hpp), `block-jacobi` only explicit-only and the block-Jacobi-18
+// hybrid, `hybrid` only the two hybrids, `explicit` only explicit-only.
 // `--warm-state FILE` keeps the warm state at the first t0 on disk (with the setup it was
 // integrated with), so a second run of the same setup skips the warm-up; a state from before t0
 // (an interrupted warm-up leaves the last tenth it reached) shortens it. `--save-end FILE`
@@ -149,8 +151,9 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--contact", with_contact, "self-contact (1) or phantom sheet (0)");
   app.add_option("--variants", which, "all, short (explicit only, block Jacobi 18 and two-level), "
-                 "hybrid (block Jacobi 18 and two-level) or explicit (explicit only)")
-      ->check(CLI::IsMember({"all", "short", "hybrid", "explicit"}));
+                 "block-jacobi (explicit only and block Jacobi 18), hybrid (block Jacobi 18 and "
+                 "two-level) or explicit (explicit only)")
+      ->check(CLI::IsMember({"all", "short", "block-jacobi", "hybrid", "explicit"}));
   app.add_option("--cg-tol", cg_tol, "CG relative residual of a step's first Newton iteration "
                  "(timed hybrid variants)")
       ->check(CLI::Range(1e-12, 1.0));
@@ -182,7 +185,7 @@ int main(int argc, char** argv) {
   }
   if (samples > 1 && (explicit_span <= 0 || which == "hybrid" || which == "explicit")) {
     std::fprintf(stderr, "bench_radial: --explicit-samples needs --explicit-span > 0 and both the "
-                 "explicit-only and a hybrid variant (--variants all or short)\n");
+                 "explicit-only and a hybrid variant (--variants all, short or block-jacobi)\n");
     return 2;
   }
   std::sort(starts.begin(), starts.end());
@@ -206,6 +209,7 @@ int main(int argc, char** argv) {
   // after that hybrid, so a long run that is stopped during a later variant still has the ratio.
   if (which == "hybrid" || samples > 1) variants.erase(variants.begin());
   if (which == "explicit") variants.resize(1);
+  if (which == "block-jacobi") variants.pop_back();
   if (which == "all")
     for (const Variant& v : {Variant{"hybrid, CG + block Jacobi 144", "block_jacobi", 144, false},
                              Variant{"hybrid, CG, no preconditioner", "cg", 18, false},
@@ -296,6 +300,14 @@ int main(int argc, char** argv) {
         else if (span < dt)
           std::printf("   (scaled from %.1f s wall over [%g, %g])", measured, t0, t0 + span);
         std::printf("\n");
+        // The raw totals, for summing the pieces of a chained run (radial_chain.sh).
+        std::printf("    totals: measured %.3f s over %g s, steps %ld, explicit %ld, switches %ld, "
+                    "implicit attempts %ld, newton %ld, cg %ld, rejected %ld %ld %ld %ld, wall "
+                    "implicit %.3f linear %.3f explicit %.3f\n",
+                    measured, covered, sum.steps(), sum.steps_explicit, sum.switches,
+                    sum.implicit_attempts, sum.newton_iters, sum.cg_iters, sum.rejected_error,
+                    sum.rejected_newton, sum.rejected_not_spd, sum.rejected_other,
+                    sum.wall_implicit, sum.wall_linear, sum.wall_explicit);
         if (sum.rejections() > 0)
           std::printf("    rejected attempts: error test %ld, Newton %ld, not SPD %ld, other %ld\n",
                       sum.rejected_error, sum.rejected_newton, sum.rejected_not_spd,

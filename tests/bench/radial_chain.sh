@@ -1,0 +1,124 @@
+#!/usr/bin/env bash
+# A long bench_radial interval timed in pieces that survive interruptions.
+#
+# At 12000 nodes the hybrid alone needs hours of a quiet machine for one simulated second in
+# dense self-contact, more than one sitting. This driver cuts [from, to] into pieces of `piece`
+# seconds; each piece is one bench_radial run (--variants block-jacobi: explicit-only over the
+# first --span of the piece, scaled, then the block-Jacobi-18 hybrid over the whole piece),
+# started from the state the previous piece's hybrid ended in (--warm-state / --save-end). A
+# piece that completes leaves piece_T.log and piece_T.done in the chain directory; rerunning the
+# same command skips finished pieces and redoes an interrupted one from its start. The first
+# piece warms up from --seed (a warm state file from before `from`, bench_radial --warm-state)
+# or from rest, resumably too.
+#
+# Each piece restarts the hybrid with a fresh integrator (BDF order 1, the switching average
+# empty), which a single run would not do: the summary counts the pieces so that this can be
+# weighed.
+#
+#   tests/bench/radial_chain.sh [--nodes 12000] [--from 3] [--to 4] [--piece 0.05]
+#                               [--span 0.002] [--dir build/radial_chain_NODES] [--seed FILE]
+#                               [--bench build/tests/bench/bench_radial] [--summary]
+# --summary prints the totals over the finished pieces without running anything.
+set -euo pipefail
+
+nodes=12000 from=3 to=4 piece=0.05 span=0.002 dir="" seed="" summary_only=0
+bench=build/tests/bench/bench_radial
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --nodes) nodes=$2; shift 2 ;;
+    --from) from=$2; shift 2 ;;
+    --to) to=$2; shift 2 ;;
+    --piece) piece=$2; shift 2 ;;
+    --span) span=$2; shift 2 ;;
+    --dir) dir=$2; shift 2 ;;
+    --seed) seed=$2; shift 2 ;;
+    --bench) bench=$2; shift 2 ;;
+    --summary) summary_only=1; shift ;;
+    *) echo "radial_chain.sh: unknown argument '$1' (see the header of $0)" >&2; exit 2 ;;
+  esac
+done
+dir=${dir:-build/radial_chain_$nodes}
+tfmt() { awk -v x="$1" 'BEGIN { printf "%.4f", x }'; }
+npieces=$(awk -v a="$from" -v b="$to" -v p="$piece" 'BEGIN { n = (b - a) / p; printf "%d", n + 0.5 }')
+if [ "$npieces" -lt 1 ]; then
+  echo "radial_chain.sh: no piece of $piece s fits in [$from, $to]" >&2
+  exit 2
+fi
+
+summary() {
+  local logs=()
+  for ((k = 0; k < npieces; ++k)); do
+    local t
+    t=$(tfmt "$(awk -v a="$from" -v p="$piece" -v k="$k" 'BEGIN { print a + k * p }')")
+    [ -f "$dir/piece_$t.done" ] && logs+=("$dir/piece_$t.log")
+  done
+  if [ ${#logs[@]} -eq 0 ]; then
+    echo "no finished piece in $dir"
+    return 0
+  fi
+  # The "totals:" line after each variant's line holds, in order: measured wall, time covered,
+  # steps, explicit steps, switches, implicit attempts, Newton and CG iterations, rejections
+  # (error, Newton, not SPD, other), wall implicit, linear, explicit.
+  awk -v total="$(awk -v a="$from" -v b="$to" 'BEGIN { print b - a }')" -v npieces="$npieces" '
+    /^explicit only/ { v = "E" }
+    /^hybrid, CG \+ block Jacobi 18 / { v = "H" }
+    /^ +totals:/ {
+      n = 0
+      for (i = 2; i <= NF; ++i) { f = $i; sub(/,$/, "", f); if (f ~ /^[0-9.eE+-]+$/) x[++n] = f }
+      for (i = 1; i <= n; ++i) sum[v, i] += x[i]
+      if (v == "H") { ++pieces; row[pieces] = sprintf("%8.1f %9d %9d %8d %10.2f", x[1], x[3], x[4], x[5], 1e3 * x[1] / x[3]) }
+      else          { erow[pieces + 1] = sprintf("%10.2f", 1e3 * x[1] / x[3]) }
+      v = ""
+    }
+    /^interval \[/ { s = $0; sub(/.*\[/, "", s); sub(/\].*/, "", s); ivs[pieces + 1] = "[" s "]" }
+    END {
+      printf "%-18s %8s %9s %9s %8s %10s %12s\n", "piece", "wall [s]", "steps", "explicit", "switches", "ms/step", "expl. ms/step"
+      for (i = 1; i <= pieces; ++i) printf "%-18s %s %12s\n", ivs[i], row[i], erow[i]
+      printf "\n%d of %d pieces finished, %g s of simulated time\n", pieces, npieces, sum["H", 2]
+      printf "hybrid, block Jacobi 18: %.1f s wall, %d steps (%d explicit), %d switches, %.2f Newton per implicit attempt, %.1f CG per Newton, rejected %d / %d / %d / %d (error / Newton / not SPD / other); wall implicit %.1f s (linear %.1f), explicit %.1f s\n", \
+        sum["H", 1], sum["H", 3], sum["H", 4], sum["H", 5], \
+        sum["H", 6] ? sum["H", 7] / sum["H", 6] : 0, sum["H", 7] ? sum["H", 8] / sum["H", 7] : 0, \
+        sum["H", 9], sum["H", 10], sum["H", 11], sum["H", 12], sum["H", 13], sum["H", 14], sum["H", 15]
+      if (sum["E", 2] > 0) {
+        scaled = sum["E", 1] / sum["E", 2] * sum["H", 2]
+        printf "explicit only: %.1f s wall over %d spans (%g s, %d steps), scaled to the finished pieces: %.1f s\n", \
+          sum["E", 1], pieces, sum["E", 2], sum["E", 3], scaled
+        printf "speed-up of the hybrid over the finished pieces: %.2fx\n", scaled / sum["H", 1]
+      }
+    }' "${logs[@]}"
+}
+
+if [ "$summary_only" = 1 ]; then
+  summary
+  exit 0
+fi
+[ -x "$bench" ] || { echo "radial_chain.sh: $bench not found (make build)" >&2; exit 2; }
+mkdir -p "$dir"
+first=$(tfmt "$from")
+if [ -n "$seed" ] && [ ! -f "$dir/state_$first.h5" ]; then
+  cp "$seed" "$dir/state_$first.h5"
+fi
+for ((k = 0; k < npieces; ++k)); do
+  t=$(tfmt "$(awk -v a="$from" -v p="$piece" -v k="$k" 'BEGIN { print a + k * p }')")
+  t1=$(tfmt "$(awk -v a="$from" -v p="$piece" -v k="$k" 'BEGIN { print a + (k + 1) * p }')")
+  [ -f "$dir/piece_$t.done" ] && continue
+  if [ "$k" -gt 0 ] && [ ! -f "$dir/state_$t.h5" ]; then
+    echo "radial_chain.sh: $dir/state_$t.h5 missing (the piece before did not finish)" >&2
+    exit 1
+  fi
+  echo "== piece [$t, $t1] at $nodes nodes -> $dir/piece_$t.log"
+  if ! "$bench" --nodes "$nodes" --t0 "$t" --dt "$piece" --variants block-jacobi \
+      --explicit-span "$span" --warm-state "$dir/state_$t.h5" --save-end "$dir/state_$t1.h5" \
+      --progress >"$dir/piece_$t.log.part" 2>&1; then
+    echo "radial_chain.sh: bench_radial failed on [$t, $t1]; see $dir/piece_$t.log.part" >&2
+    exit 1
+  fi
+  if [ "$(grep -c '^ *totals:' "$dir/piece_$t.log.part")" -ne 2 ] || [ ! -f "$dir/state_$t1.h5" ]; then
+    echo "radial_chain.sh: [$t, $t1] ended without both variants' totals and its end state;" \
+      "see $dir/piece_$t.log.part" >&2
+    exit 1
+  fi
+  mv "$dir/piece_$t.log.part" "$dir/piece_$t.log"
+  touch "$dir/piece_$t.done"
+done
+summary
