@@ -11,9 +11,10 @@
 # piece warms up from --seed (a warm state file from before `from`, bench_radial --warm-state)
 # or from rest, resumably too.
 #
-# Each piece restarts the hybrid with a fresh integrator (BDF order 1, the switching average
-# empty), which a single run would not do: the summary counts the pieces so that this can be
-# weighed.
+# The chain directory keeps a copy of the bench_radial it started with, and every piece runs
+# that copy. Each piece restarts the hybrid with a fresh integrator (BDF order 1, the switching
+# average empty), which a single run would not do: the summary counts the pieces so that this
+# can be weighed.
 #
 #   tests/bench/radial_chain.sh [--nodes 12000] [--from 3] [--to 4] [--piece 0.05]
 #                               [--span 0.002] [--dir build/radial_chain_NODES] [--seed FILE]
@@ -92,8 +93,14 @@ if [ "$summary_only" = 1 ]; then
   summary
   exit 0
 fi
-[ -x "$bench" ] || { echo "radial_chain.sh: $bench not found (make build)" >&2; exit 2; }
 mkdir -p "$dir"
+# Every piece runs the same program: the chain keeps its own copy of bench_radial from its first
+# run (a rebuild meanwhile does not mix two versions into one figure; a new chain directory
+# takes the new one).
+if [ ! -x "$dir/bench_radial" ]; then
+  [ -x "$bench" ] || { echo "radial_chain.sh: $bench not found (make build)" >&2; exit 2; }
+  cp "$bench" "$dir/bench_radial"
+fi
 first=$(tfmt "$from")
 if [ -n "$seed" ] && [ ! -f "$dir/state_$first.h5" ]; then
   cp "$seed" "$dir/state_$first.h5"
@@ -107,7 +114,7 @@ for ((k = 0; k < npieces; ++k)); do
     exit 1
   fi
   echo "== piece [$t, $t1] at $nodes nodes -> $dir/piece_$t.log"
-  if ! "$bench" --nodes "$nodes" --t0 "$t" --dt "$piece" --variants block-jacobi \
+  if ! "$dir/bench_radial" --nodes "$nodes" --t0 "$t" --dt "$piece" --variants block-jacobi \
       --explicit-span "$span" --warm-state "$dir/state_$t.h5" --save-end "$dir/state_$t1.h5" \
       --progress >"$dir/piece_$t.log.part" 2>&1; then
     echo "radial_chain.sh: bench_radial failed on [$t, $t1]; see $dir/piece_$t.log.part" >&2
