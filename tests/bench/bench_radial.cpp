@@ -6,7 +6,7 @@
 //                [--contact 1] [--variants all|short|block-jacobi|hybrid|explicit]
 //                [--explicit-span S]
 //                [--explicit-samples K] [--cg-tol 1e-2] [--cg-tol-max 0.1] [--progress]
-//                [--warm-state FILE] [--save-end FILE]
+//                [--warm-state FILE] [--require-warm] [--save-end FILE]
 // With contact (the default) the sheet is self-avoiding as in crumple-sim (sites with sigma =
 // max(h_eff, half an edge) and the fold barrier), and the share of the wall time spent in
 // contact detection (grid searches) and response (force and Jacobian) is printed with the time
@@ -21,7 +21,8 @@
 // (an interrupted warm-up leaves the last tenth it reached) shortens it. `--save-end FILE`
 // keeps the block-Jacobi-18 hybrid's state at the end of the interval: a chain of runs
 // (--t0 1 --save-end B; --t0 3 --warm-state B) reaches late intervals at 12000 nodes without
-// integrating [0, t0] in one sitting.
+// integrating [0, t0] in one sitting; `--require-warm` makes a warm state that is not at t0 an
+// error instead of a reason to warm up (tests/bench/radial_chain.sh chains pieces so).
 // --cg-tol / --cg-tol-max set the CG tolerances of the timed hybrid variants (forcing.hpp; the
 // warm-up keeps the defaults), and each hybrid variant prints where its wall time went.
 // The mass is physical by default, as in the paper: the explicit step is bounded by the node
@@ -120,8 +121,13 @@ void add_sample(RunStats& total, const RunStats& one) {
   IntegratorSummary& t = total.integ;
   const IntegratorSummary& o = one.integ;
   t.steps_implicit += o.steps_implicit, t.steps_explicit += o.steps_explicit;
+  t.switches += o.switches, t.implicit_attempts += o.implicit_attempts;
+  t.newton_iters += o.newton_iters, t.cg_iters += o.cg_iters;
   t.rejected_error += o.rejected_error, t.rejected_newton += o.rejected_newton;
   t.rejected_not_spd += o.rejected_not_spd, t.rejected_other += o.rejected_other;
+  t.wall_assembly += o.wall_assembly, t.wall_linear += o.wall_linear;
+  t.wall_total += o.wall_total, t.wall_implicit += o.wall_implicit;
+  t.wall_explicit += o.wall_explicit, t.wall_before_step += o.wall_before_step;
   total.contact.searches += one.contact.searches;
   total.contact.search_seconds += one.contact.search_seconds;
   total.contact.eval_seconds += one.contact.eval_seconds;
@@ -137,7 +143,7 @@ int main(int argc, char** argv) {
   double dt = 1.0, mass_scale = 1.0, force = 0.0, explicit_span = 0.0;
   double cg_tol = IntegratorSettings{}.cg_tol, cg_tol_max = IntegratorSettings{}.cg_tol_max;
   int samples = 1;
-  bool with_contact = true, progress = false;
+  bool with_contact = true, progress = false, require_warm = false;
   std::string which = "all", warm_path, end_path;
   CLI::App app{"bench_radial: radial confinement, explicit-only against the hybrid integrator"};
   app.add_option("--nodes", nodes, "mesh nodes")->check(CLI::Range(50, 10000000));
@@ -176,6 +182,8 @@ int main(int argc, char** argv) {
                  "HDF5 file for the state at the end of the (last) interval from the block-Jacobi "
                  "18 hybrid at the default tolerances: a later --warm-state FILE --t0 T > that "
                  "time warms up from it");
+  app.add_flag("--require-warm", require_warm, "fail unless --warm-state holds the state at the "
+               "first t0 (never warm up: a chain of runs must not fall back to a warm-up from rest)");
   app.add_flag("--progress", progress, "print a line per tenth of each timed interval too (the "
                "warm-up always does)");
   CLI11_PARSE(app, argc, argv);
@@ -222,6 +230,11 @@ int main(int argc, char** argv) {
   for (const double t0 : starts) {
     const bool keep = t0 == starts.front() && !warm_path.empty();
     auto w = keep ? load_warm_state(warm_path, su.mesh.num_nodes(), t0, setup, true) : std::nullopt;
+    if (require_warm && t0 == starts.front() && !(w && w->t == t0)) {
+      std::fprintf(stderr, "bench_radial: --require-warm: %s does not hold this setup's state at "
+                   "t0 = %g s\n", warm_path.empty() ? "(no --warm-state)" : warm_path.c_str(), t0);
+      return 2;
+    }
     if (w && w->t < t0) {
       // An earlier state of the same setup (e.g. a previous run's --save-end): warm up from it.
       std::printf("warm state at t = %g s read from %s\n", w->t, warm_path.c_str());

@@ -5,7 +5,8 @@
 # dense self-contact, more than one sitting. This driver cuts [from, to] into pieces of `piece`
 # seconds; each piece is one bench_radial run (--variants block-jacobi: explicit-only over the
 # first --span of the piece, scaled, then the block-Jacobi-18 hybrid over the whole piece),
-# started from the state the previous piece's hybrid ended in (--warm-state / --save-end). A
+# started from the state the previous piece's hybrid ended in (--warm-state / --save-end; with
+# --require-warm, so that a missing or mismatched state stops the chain instead of warming up). A
 # piece that completes leaves piece_T.log and piece_T.done in the chain directory; rerunning the
 # same command skips finished pieces and redoes an interrupted one from its start. The first
 # piece warms up from --seed (a warm state file from before `from`, bench_radial --warm-state)
@@ -39,18 +40,28 @@ while [ $# -gt 0 ]; do
   esac
 done
 dir=${dir:-build/radial_chain_$nodes}
-tfmt() { awk -v x="$1" 'BEGIN { printf "%.4f", x }'; }
-npieces=$(awk -v a="$from" -v b="$to" -v p="$piece" 'BEGIN { n = (b - a) / p; printf "%d", n + 0.5 }')
-if [ "$npieces" -lt 1 ]; then
-  echo "radial_chain.sh: no piece of $piece s fits in [$from, $to]" >&2
+# Piece times are named and passed with four decimals: from and piece must be whole multiples
+# of 1e-4 s and [from, to] a whole number of pieces.
+npieces=$(awk -v a="$from" -v b="$to" -v p="$piece" 'BEGIN {
+  n = (b - a) / p
+  if (p <= 0 || n < 0.5 || (n - int(n + 0.5))^2 > 1e-12 ||
+      (a * 1e4 - int(a * 1e4 + 0.5))^2 > 1e-12 || (p * 1e4 - int(p * 1e4 + 0.5))^2 > 1e-12)
+    print "bad"
+  else
+    printf "%d", n + 0.5 }')
+if [ "$npieces" = bad ]; then
+  echo "radial_chain.sh: [$from, $to] must be a whole number (>= 1) of pieces of $piece s, and" \
+    "--from and --piece multiples of 0.0001 s" >&2
   exit 2
 fi
+# The start of piece k, as passed to bench_radial and used in file names.
+piece_start() { awk -v a="$from" -v p="$piece" -v k="$1" 'BEGIN { printf "%.4f", a + k * p }'; }
 
 summary() {
   local logs=()
   for ((k = 0; k < npieces; ++k)); do
     local t
-    t=$(tfmt "$(awk -v a="$from" -v p="$piece" -v k="$k" 'BEGIN { print a + k * p }')")
+    t=$(piece_start "$k")
     [ -f "$dir/piece_$t.done" ] && logs+=("$dir/piece_$t.log")
   done
   if [ ${#logs[@]} -eq 0 ]; then
@@ -60,15 +71,18 @@ summary() {
   # The "totals:" line after each variant's line holds, in order: measured wall, time covered,
   # steps, explicit steps, switches, implicit attempts, Newton and CG iterations, rejections
   # (error, Newton, not SPD, other), wall implicit, linear, explicit.
-  awk -v total="$(awk -v a="$from" -v b="$to" 'BEGIN { print b - a }')" -v npieces="$npieces" '
+  awk -v npieces="$npieces" '
     /^explicit only/ { v = "E" }
     /^hybrid, CG \+ block Jacobi 18 / { v = "H" }
     /^ +totals:/ {
       n = 0
+      delete x
       for (i = 2; i <= NF; ++i) { f = $i; sub(/,$/, "", f); if (f ~ /^[0-9.eE+-]+$/) x[++n] = f }
+      if (n != 15) { printf "unexpected totals line: %s\n", $0 > "/dev/stderr"; exit 1 }
       for (i = 1; i <= n; ++i) sum[v, i] += x[i]
-      if (v == "H") { ++pieces; row[pieces] = sprintf("%8.1f %9d %9d %8d %10.2f", x[1], x[3], x[4], x[5], 1e3 * x[1] / x[3]) }
-      else          { erow[pieces + 1] = sprintf("%10.2f", 1e3 * x[1] / x[3]) }
+      ms = x[3] > 0 ? 1e3 * x[1] / x[3] : 0
+      if (v == "H") { ++pieces; row[pieces] = sprintf("%8.1f %9d %9d %8d %10.2f", x[1], x[3], x[4], x[5], ms) }
+      else          { erow[pieces + 1] = sprintf("%10.2f", ms) }
       v = ""
     }
     /^interval \[/ { s = $0; sub(/.*\[/, "", s); sub(/\].*/, "", s); ivs[pieces + 1] = "[" s "]" }
@@ -99,24 +113,29 @@ mkdir -p "$dir"
 # takes the new one).
 if [ ! -x "$dir/bench_radial" ]; then
   [ -x "$bench" ] || { echo "radial_chain.sh: $bench not found (make build)" >&2; exit 2; }
-  cp "$bench" "$dir/bench_radial"
+  cp "$bench" "$dir/bench_radial.part" && mv "$dir/bench_radial.part" "$dir/bench_radial"
 fi
-first=$(tfmt "$from")
+first=$(piece_start 0)
 if [ -n "$seed" ] && [ ! -f "$dir/state_$first.h5" ]; then
   cp "$seed" "$dir/state_$first.h5"
 fi
 for ((k = 0; k < npieces; ++k)); do
-  t=$(tfmt "$(awk -v a="$from" -v p="$piece" -v k="$k" 'BEGIN { print a + k * p }')")
-  t1=$(tfmt "$(awk -v a="$from" -v p="$piece" -v k="$k" 'BEGIN { print a + (k + 1) * p }')")
+  t=$(piece_start "$k")
+  t1=$(piece_start $((k + 1)))
   [ -f "$dir/piece_$t.done" ] && continue
-  if [ "$k" -gt 0 ] && [ ! -f "$dir/state_$t.h5" ]; then
-    echo "radial_chain.sh: $dir/state_$t.h5 missing (the piece before did not finish)" >&2
-    exit 1
+  # Only the first piece may warm up; a later one must start from the previous piece's end.
+  warm=()
+  if [ "$k" -gt 0 ]; then
+    if [ ! -f "$dir/state_$t.h5" ]; then
+      echo "radial_chain.sh: $dir/state_$t.h5 missing (the piece before did not finish)" >&2
+      exit 1
+    fi
+    warm=(--require-warm)
   fi
   echo "== piece [$t, $t1] at $nodes nodes -> $dir/piece_$t.log"
   if ! "$dir/bench_radial" --nodes "$nodes" --t0 "$t" --dt "$piece" --variants block-jacobi \
-      --explicit-span "$span" --warm-state "$dir/state_$t.h5" --save-end "$dir/state_$t1.h5" \
-      --progress >"$dir/piece_$t.log.part" 2>&1; then
+      --explicit-span "$span" --warm-state "$dir/state_$t.h5" "${warm[@]}" \
+      --save-end "$dir/state_$t1.h5" --progress >"$dir/piece_$t.log.part" 2>&1; then
     echo "radial_chain.sh: bench_radial failed on [$t, $t1]; see $dir/piece_$t.log.part" >&2
     exit 1
   fi

@@ -1,33 +1,52 @@
 #!/usr/bin/env bash
-# tests/bench/radial_chain.sh on a 100-node sheet: pieces chain through their end states, a
-# rerun skips finished pieces and redoes an unfinished one, and the summary sums the pieces.
+# tests/bench/radial_chain.sh on a 100-node sheet: pieces chain through their end states (whose
+# times land above, on or below the next piece's decimal start), a rerun skips finished pieces
+# and redoes an unfinished one, and the summary sums the pieces.
 #   test_radial_chain.sh BENCH_RADIAL
 set -euo pipefail
 bench=$1
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-chain() { tests/bench/radial_chain.sh --bench "$bench" --nodes 100 --from 0.02 --to 0.04 \
+# 0.05 + 0.01 is a hair above 0.06 in binary, 0.06 + 0.01 a hair below 0.07.
+chain() { tests/bench/radial_chain.sh --bench "$bench" --nodes 100 --from 0.05 --to 0.08 \
   --piece 0.01 --span 0.0005 --dir "$dir/chain" "$@"; }
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 out=$(chain)
-[ -f "$dir/chain/piece_0.0200.done" ] && [ -f "$dir/chain/piece_0.0300.done" ] || fail "pieces not finished"
-grep -q "warm state at t0 = 0.03 s read from" "$dir/chain/piece_0.0300.log" ||
-  fail "the second piece did not start from the first one's end state"
+for t in 0.0500 0.0600 0.0700; do
+  [ -f "$dir/chain/piece_$t.done" ] || fail "piece $t not finished: $out"
+done
+for t in 0.06 0.07; do
+  grep -q "warm state at t0 = $t s read from" "$dir/chain/piece_${t}00.log" ||
+    fail "the piece from $t did not start from the previous piece's end state"
+done
 # The hybrid's steps in the summary against the pieces' own totals lines.
 steps=$(awk '/^hybrid, CG \+ block Jacobi 18 /{h=1} /^ +totals:/{if(h){gsub(",","");s+=$9}; h=0} END{print s}' \
   "$dir"/chain/piece_*.log)
-echo "$out" | grep -q "2 of 2 pieces finished" || fail "summary: $out"
-echo "$out" | grep -q "hybrid, block Jacobi 18: .* s wall, $steps steps" ||
+grep -q "3 of 3 pieces finished" <<<"$out" || fail "summary: $out"
+grep -q "hybrid, block Jacobi 18: .* s wall, $steps steps" <<<"$out" ||
   fail "summary does not sum the pieces' $steps steps: $out"
-echo "$out" | grep -q "explicit only: .* over 2 spans" || fail "explicit-only spans: $out"
+grep -q "explicit only: .* over 3 spans" <<<"$out" || fail "explicit-only spans: $out"
 
-# A rerun runs nothing; an unfinished piece is redone, alone.
-chain | grep -q "== piece" && fail "a rerun ran a finished piece again"
-rm "$dir/chain/piece_0.0300.done"
-redo=$(chain | grep -c "== piece" || true)
-[ "$redo" = 1 ] || fail "expected one piece redone, got $redo"
+# A rerun runs nothing; an unfinished piece is redone, alone, and the chain is whole again.
+out=$(chain)
+grep -q "== piece" <<<"$out" && fail "a rerun ran a finished piece again: $out"
+rm "$dir/chain/piece_0.0600.done"
+out=$(chain)
+[ "$(grep -c "== piece" <<<"$out")" = 1 ] || fail "expected one piece redone: $out"
+[ -f "$dir/chain/piece_0.0600.done" ] || fail "the redone piece did not finish"
+grep -q "3 of 3 pieces finished" <<<"$out" || fail "summary after the redo: $out"
 
+# A later piece never warms up: a start state from another time is an error, as is none.
+rm "$dir/chain/piece_0.0700.done"
+cp "$dir/chain/state_0.0600.h5" "$dir/chain/state_0.0700.h5"
+if chain >/dev/null 2>&1; then fail "a piece started from a state at another time"; fi
+grep -q "require-warm" "$dir/chain/piece_0.0700.log.part" || fail "no --require-warm refusal"
+rm "$dir/chain/state_0.0700.h5"
+if chain >/dev/null 2>&1; then fail "a piece without its start state ran"; fi
 # Bad arguments are refused.
 if tests/bench/radial_chain.sh --bogus 1 2>/dev/null; then fail "--bogus accepted"; fi
+if tests/bench/radial_chain.sh --from 3 --to 3.13 --piece 0.05 2>/dev/null; then
+  fail "a range that is not a whole number of pieces was accepted"
+fi
 echo "radial_chain.sh: chaining, resuming and summing pass"

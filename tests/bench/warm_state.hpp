@@ -47,13 +47,14 @@ inline std::optional<State> read_warm_state(const std::string& path, std::int64_
   const H5::Group g = file.openGroup("state");
   const double t_file = h5::attr_double(g, "t");
   // A state saved at the end of an interval [t0, t0 + dt] carries the integrator's sum, which
-  // can differ from the decimal t0 + dt a later run is given in the last bits.
+  // can differ from the decimal t0 + dt a later run is given in the last bits (either way): it
+  // is taken as the state at t, and its time set to t.
   const bool at_t = std::abs(t_file - t) <= 1e-12 * std::max(1.0, std::abs(t));
   if (h5::attr_int(g, "nodes") != nodes || !(at_t || (or_earlier && t_file < t)) ||
       h5::attr_string(g, "description") != description)
     return std::nullopt;
   State s;
-  s.t = t_file;
+  s.t = at_t ? t : t_file;
   const auto x = h5::read_doubles(g, "x"), v = h5::read_doubles(g, "v"), p = h5::read_doubles(g, "p");
   s.x = Eigen::Map<const VecX>(x.data(), static_cast<Eigen::Index>(x.size()));
   s.v = Eigen::Map<const VecX>(v.data(), static_cast<Eigen::Index>(v.size()));

@@ -128,7 +128,7 @@ TEST(ForceTerms, FoldedStateReachesTheAngle) {
 }
 
 TEST(ForceTerms, LastCurvaturesAreThoseOfTheLatestForce) {
-  // The explicit right-hand side takes the plastic rate's curvatures from the bending cache
+  // The explicit right-hand side takes the plastic rate's curvatures from the bending term
   // after the force: they must be the state's, and follow it to the next state.
   const Mesh& m = test_mesh();
   BendingTerm b(m, 1.0);
