@@ -5,6 +5,7 @@
 
 #include "protocols/registry.hpp"
 #include "sim/contact/self_contact.hpp"
+#include "sim/io/params.hpp"
 #include "sim/mesh/generate.hpp"
 
 #include <algorithm>
@@ -62,12 +63,13 @@ inline std::unique_ptr<Stage> begin_radial_stage(const RadialSheet& su, SheetMod
   return stage;
 }
 
-/// Self-contact as crumple-sim sets it up (sigma = max(h_eff, half an edge), fold barrier),
-/// added to `model`.
+/// Self-contact as crumple-sim sets it up by default (sigma = max(h_eff, half an edge), the
+/// config's candidate-list skin, fold barrier), added to `model`.
 inline std::unique_ptr<SelfContact> add_contact(const RadialSheet& su, SheetModel& model) {
   ContactSettings cs;
   cs.ks = su.params.ks;
   cs.sigma = std::max(su.info.h_eff, 0.5 * su.info.spacing);
+  cs.skin = ContactParams{}.skin;
   auto contact = std::make_unique<SelfContact>(su.mesh, cs);
   contact->add_to(model);
   return contact;
