@@ -18,12 +18,13 @@
 # can be weighed.
 #
 #   tests/bench/radial_chain.sh [--nodes 12000] [--from 3] [--to 4] [--piece 0.05]
-#                               [--span 0.002] [--dir build/radial_chain_NODES] [--seed FILE]
+#                               [--span 0.002] [--threads 2] [--dir build/radial_chain_NODES]
+#                               [--seed FILE]
 #                               [--bench build/tests/bench/bench_radial] [--summary]
 # --summary prints the totals over the finished pieces without running anything.
 set -euo pipefail
 
-nodes=12000 from=3 to=4 piece=0.05 span=0.002 dir="" seed="" summary_only=0
+nodes=12000 from=3 to=4 piece=0.05 span=0.002 threads=2 dir="" seed="" summary_only=0
 bench=build/tests/bench/bench_radial
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -32,6 +33,7 @@ while [ $# -gt 0 ]; do
     --to) to=$2; shift 2 ;;
     --piece) piece=$2; shift 2 ;;
     --span) span=$2; shift 2 ;;
+    --threads) threads=$2; shift 2 ;;
     --dir) dir=$2; shift 2 ;;
     --seed) seed=$2; shift 2 ;;
     --bench) bench=$2; shift 2 ;;
@@ -133,8 +135,8 @@ for ((k = 0; k < npieces; ++k)); do
     warm=(--require-warm)
   fi
   echo "== piece [$t, $t1] at $nodes nodes -> $dir/piece_$t.log"
-  if ! "$dir/bench_radial" --nodes "$nodes" --t0 "$t" --dt "$piece" --variants block-jacobi \
-      --explicit-span "$span" --warm-state "$dir/state_$t.h5" "${warm[@]}" \
+  if ! "$dir/bench_radial" --nodes "$nodes" --threads "$threads" --t0 "$t" --dt "$piece" \
+      --variants block-jacobi --explicit-span "$span" --warm-state "$dir/state_$t.h5" "${warm[@]}" \
       --save-end "$dir/state_$t1.h5" --progress >"$dir/piece_$t.log.part" 2>&1; then
     echo "radial_chain.sh: bench_radial failed on [$t, $t1]; see $dir/piece_$t.log.part" >&2
     exit 1
