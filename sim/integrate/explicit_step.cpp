@@ -38,11 +38,8 @@ void Integrator::explicit_rhs(double t, const VecX& y, VecX& dy, State& sc) {
   parallel_assign(sc.p, y.tail(nh));
   VecX F, g;
   model_.forces(sc, F);
-  // The curvatures of sc, kept by the bending force just evaluated.
-  if (law_.enabled)
-    plastic_rate_from(model_.bending().last_curvatures(), sc.p, g);
-  else
-    plastic_rate_from(VecX(), sc.p, g);
+  // The curvatures of sc, kept by the bending force just evaluated (unread without plasticity).
+  plastic_rate_from(model_.bending().last_curvatures(), sc.p, g);
   dy.resize(y.size());
   auto dx = dy.head(n3), dv = dy.segment(n3, n3), dp = dy.tail(nh);
   parallel_assign(dx, sc.v);

@@ -62,10 +62,9 @@ void BendingTerm::update_cache(const State& s) const {
     const HalfAngle ha = hinge_gradient(s.x, h, c.grad);
     const double sh = ha.sin_half, ch = ha.cos_half;
     c.cos_half = ch;
-    c.c = 2.0 * sh;
-    curvature_[h] = c.c;
+    curvature_[h] = 2.0 * sh;
     const double k = kb_ * mesh_->hinges[h].rest_factor;
-    const double d = c.c - s.p[h];
+    const double d = curvature_[h] - s.p[h];
     c.zeta = k * d * ch;
     c.xi = k * (ch * ch - 0.5 * d * sh);
   }

@@ -54,7 +54,7 @@ class BendingTerm : public ForceTerm {
 
  private:
   struct HingeCache {
-    double cos_half, c, zeta, xi;
+    double cos_half, zeta, xi;  // c itself is in curvature_
     Vec12 grad;  // d theta / dx over the hinge's 4 nodes
   };
   /// Every hinge's cache, of the Jacobians (and the curvatures).
