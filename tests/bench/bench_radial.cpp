@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // lines show up at once when piped to a file
   int nodes = 3000, threads = 2;
   std::vector<double> starts{1.0};
-  double dt = 1.0, mass_scale = 1.0, force = 0.0, explicit_span = 0.0;
+  double dt = 1.0, mass_scale = 1.0, force = 0.0, explicit_span = 0.0, thickness_mm = 0.125;
   double cg_tol = IntegratorSettings{}.cg_tol, cg_tol_max = IntegratorSettings{}.cg_tol_max;
   int samples = 1;
   bool with_contact = true, progress = false, require_warm = false;
@@ -153,6 +153,9 @@ int main(int argc, char** argv) {
   app.add_option("--dt", dt, "length of each timed interval (s)")->check(CLI::PositiveNumber);
   app.add_option("--threads", threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   app.add_option("--mass-scale", mass_scale, "node mass / physical mass")->check(CLI::PositiveNumber);
+  app.add_option("--thickness", thickness_mm, "sheet thickness h_eff in mm (the paper's Fig. 5 "
+                 "sheet: 0.25)")
+      ->check(CLI::Range(0.01, 10.0));
   app.add_option("--force", force, "confining force per node in ks h_eff (0: the stage's default)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--contact", with_contact, "self-contact (1) or phantom sheet (0)");
@@ -198,10 +201,11 @@ int main(int argc, char** argv) {
   }
   std::sort(starts.begin(), starts.end());
   omp_set_num_threads(threads);
-  const RadialSheet su = make_radial_sheet(nodes, mass_scale);
+  const double thickness = thickness_mm == 0.125 ? kRadialThickness : 1e-3 * thickness_mm;
+  const RadialSheet su = make_radial_sheet(nodes, mass_scale, thickness);
   State s = SheetModel(su.mesh, su.params).rest_state();
-  std::printf("radial confinement, %d nodes, %d threads, mass scale %g, force %s, %s\n",
-              su.mesh.num_nodes(), omp_get_max_threads(), mass_scale,
+  std::printf("radial confinement, %d nodes, %d threads, h_eff %g mm, mass scale %g, force %s, %s\n",
+              su.mesh.num_nodes(), omp_get_max_threads(), thickness_mm, mass_scale,
               force > 0 ? (std::to_string(force) + " ks h_eff").c_str() : "the stage's default",
               with_contact ? "self-contact" : "phantom sheet");
   struct Variant {
@@ -226,7 +230,7 @@ int main(int argc, char** argv) {
       variants.push_back(v);
   if (samples > 1)
     variants.insert(variants.begin() + 1, {"explicit only (RK4(3))", "cg", 18, true});
-  const std::string setup = warm_description(force, with_contact, mass_scale);
+  const std::string setup = warm_description(force, with_contact, mass_scale, thickness);
   for (const double t0 : starts) {
     const bool keep = t0 == starts.front() && !warm_path.empty();
     auto w = keep ? load_warm_state(warm_path, su.mesh.num_nodes(), t0, setup, true) : std::nullopt;

@@ -19,12 +19,14 @@
 #
 #   tests/bench/radial_chain.sh [--nodes 12000] [--from 3] [--to 4] [--piece 0.05]
 #                               [--span 0.002] [--threads 2] [--dir build/radial_chain_NODES]
-#                               [--seed FILE]
+#                               [--seed FILE] [--thickness MM]
 #                               [--bench build/tests/bench/bench_radial] [--summary]
+# --thickness is passed to bench_radial (its default when absent, 0.125 mm) and names the default
+# directory, build/radial_chain_NODES_hMM.
 # --summary prints the totals over the finished pieces without running anything.
 set -euo pipefail
 
-nodes=12000 from=3 to=4 piece=0.05 span=0.002 threads=2 dir="" seed="" summary_only=0
+nodes=12000 from=3 to=4 piece=0.05 span=0.002 threads=2 dir="" seed="" thickness="" summary_only=0
 bench=build/tests/bench/bench_radial
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -36,12 +38,15 @@ while [ $# -gt 0 ]; do
     --threads) threads=$2; shift 2 ;;
     --dir) dir=$2; shift 2 ;;
     --seed) seed=$2; shift 2 ;;
+    --thickness) thickness=$2; shift 2 ;;
     --bench) bench=$2; shift 2 ;;
     --summary) summary_only=1; shift ;;
     *) echo "radial_chain.sh: unknown argument '$1' (see the header of $0)" >&2; exit 2 ;;
   esac
 done
-dir=${dir:-build/radial_chain_$nodes}
+dir=${dir:-build/radial_chain_$nodes${thickness:+_h$thickness}}
+sheet=()
+[ -n "$thickness" ] && sheet=(--thickness "$thickness")
 # Piece times are named and passed with four decimals: from and piece must be whole multiples
 # of 1e-4 s and [from, to] a whole number of pieces.
 npieces=$(awk -v a="$from" -v b="$to" -v p="$piece" 'BEGIN {
@@ -135,7 +140,7 @@ for ((k = 0; k < npieces; ++k)); do
     warm=(--require-warm)
   fi
   echo "== piece [$t, $t1] at $nodes nodes -> $dir/piece_$t.log"
-  if ! "$dir/bench_radial" --nodes "$nodes" --threads "$threads" --t0 "$t" --dt "$piece" \
+  if ! "$dir/bench_radial" --nodes "$nodes" "${sheet[@]}" --threads "$threads" --t0 "$t" --dt "$piece" \
       --variants block-jacobi --explicit-span "$span" --warm-state "$dir/state_$t.h5" "${warm[@]}" \
       --save-end "$dir/state_$t1.h5" --progress >"$dir/piece_$t.log.part" 2>&1; then
     echo "radial_chain.sh: bench_radial failed on [$t, $t1]; see $dir/piece_$t.log.part" >&2

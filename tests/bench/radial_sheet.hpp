@@ -1,5 +1,6 @@
 // The radial-confinement sheet of the benchmarks (paper Fig. 5a): a 10 cm disk, h_eff
-// 0.125 mm, Y = 1 GPa, density 1400 kg/m^3 with a mass scale, drag 0.01 and internal damping
+// 0.125 mm by default (the paper's Fig. 5 sheet is 0.25 mm thick, its Fig. 7 one 0.125 mm; the
+// issue allows either), Y = 1 GPa, density 1400 kg/m^3 with a mass scale, drag 0.01 and internal damping
 // 0.1 of sqrt(ks m) as the protocol files' defaults.
 #pragma once
 
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
 
 namespace crumple {
 
@@ -20,10 +22,14 @@ struct RadialSheet {
   SheetInfo info;
 };
 
-inline RadialSheet make_radial_sheet(int nodes, double mass_scale) {
+/// The benchmarks' default sheet thickness h_eff (m).
+inline constexpr double kRadialThickness = 1.25e-4;
+
+inline RadialSheet make_radial_sheet(int nodes, double mass_scale,
+                                     double thickness = kRadialThickness) {
   RadialSheet s;
   s.mesh = generate_mesh(MeshSpec{"disk", 0.1, nodes, 1});
-  const double h = 1.25e-4, Y = 1e9, rho = 1400;
+  const double h = thickness, Y = 1e9, rho = 1400;
   const double kappa = Y * h * h * h / (12.0 * (1.0 - 1.0 / 9.0));
   s.params.ks = std::sqrt(3.0) / 2.0 * Y * h;
   s.params.kb = 2.0 * kappa / std::sqrt(3.0);
@@ -36,6 +42,18 @@ inline RadialSheet make_radial_sheet(int nodes, double mass_scale) {
   s.info.ks = s.params.ks, s.info.kb = s.params.kb, s.info.mass = s.params.mass;
   s.info.spacing = s.mesh.mean_edge_length();
   return s;
+}
+
+/// What a warm state was integrated with (bench_radial's warm-up: hybrid, block Jacobi 18); a
+/// state is reused only for the same setup. The thickness is named only when it is not the
+/// default 0.125 mm, so that states saved before it could be chosen keep their description.
+inline std::string warm_description(double force, bool contact, double mass_scale,
+                                    double thickness = kRadialThickness) {
+  std::string d = "bench_radial warm-up, hybrid block Jacobi 18, force " + std::to_string(force) +
+                  (contact ? ", contact" : ", phantom sheet") + ", mass scale " +
+                  std::to_string(mass_scale);
+  if (thickness != kRadialThickness) d += ", thickness " + std::to_string(thickness * 1e3) + " mm";
+  return d;
 }
 
 /// The radial confinement stage as the protocols write it: cutoff shrinking at 1 cm/s for 5 s,

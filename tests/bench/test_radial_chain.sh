@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tests/bench/radial_chain.sh on a 100-node sheet: pieces chain through their end states (whose
 # times land above, on or below the next piece's decimal start), a rerun skips finished pieces
-# and redoes an unfinished one, and the summary sums the pieces.
+# and redoes an unfinished one, the summary sums the pieces, and --thickness keeps sheets apart.
 #   test_radial_chain.sh BENCH_RADIAL
 set -euo pipefail
 bench=$1
@@ -44,6 +44,14 @@ if chain >/dev/null 2>&1; then fail "a piece started from a state at another tim
 grep -q "require-warm" "$dir/chain/piece_0.0700.log.part" || fail "no --require-warm refusal"
 rm "$dir/chain/state_0.0700.h5"
 if chain >/dev/null 2>&1; then fail "a piece without its start state ran"; fi
+# --thickness reaches bench_radial, and a state of the default sheet is no start for another one:
+# the piece warms up from rest.
+tests/bench/radial_chain.sh --bench "$bench" --nodes 100 --from 0.06 --to 0.07 --piece 0.01 \
+  --span 0.0005 --dir "$dir/thick" --thickness 0.25 --seed "$dir/chain/state_0.0600.h5" >/dev/null ||
+  fail "the chain with --thickness failed"
+grep -q "h_eff 0.25 mm" "$dir/thick/piece_0.0600.log" || fail "--thickness not passed on"
+grep -q "from t = 0 s to t0 = 0.06 s" "$dir/thick/piece_0.0600.log" ||
+  fail "a 0.25 mm piece started from the 0.125 mm sheet's state"
 # Bad arguments are refused.
 if tests/bench/radial_chain.sh --bogus 1 2>/dev/null; then fail "--bogus accepted"; fi
 if tests/bench/radial_chain.sh --from 3 --to 3.13 --piece 0.05 2>/dev/null; then

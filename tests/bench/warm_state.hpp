@@ -16,13 +16,6 @@
 
 namespace crumple {
 
-/// What a warm state was integrated with (bench_radial's warm-up: hybrid, block Jacobi 18); a
-/// state is reused only for the same setup.
-inline std::string warm_description(double force, bool contact, double mass_scale) {
-  return "bench_radial warm-up, hybrid block Jacobi 18, force " + std::to_string(force) +
-         (contact ? ", contact" : ", phantom sheet") + ", mass scale " + std::to_string(mass_scale);
-}
-
 inline void save_warm_state(const std::string& path, const State& s, std::int64_t nodes,
                             const std::string& description) {
   const std::string tmp = path + ".new";
