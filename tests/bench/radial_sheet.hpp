@@ -1,7 +1,7 @@
 // The radial-confinement sheet of the benchmarks (paper Fig. 5a): a 10 cm disk, h_eff
 // 0.125 mm by default (the paper's Fig. 5 sheet is 0.25 mm thick, its Fig. 7 one 0.125 mm; the
-// issue allows either), Y = 1 GPa, density 1400 kg/m^3 with a mass scale, drag 0.01 and internal damping
-// 0.1 of sqrt(ks m) as the protocol files' defaults.
+// issue allows either), Y = 1 GPa, density 1400 kg/m^3 with a mass scale, drag 0.01 and internal
+// damping 0.1 of sqrt(ks m) as the protocol files' defaults.
 #pragma once
 
 #include "protocols/registry.hpp"
