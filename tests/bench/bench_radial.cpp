@@ -3,8 +3,8 @@
 // integrated once to t0; every variant (explicit only, hybrid with each linear solver) then
 // restarts from that same state and is timed over [t0, t0 + dt].
 //   bench_radial [--nodes 3000] [--t0 1 [3 ...]] [--dt 1] [--threads 2] [--mass-scale 1] [--force F]
-//                [--contact 1] [--variants all|short|block-jacobi|hybrid|explicit]
-//                [--explicit-span S]
+//                [--thickness 0.125] [--mesh-seed 1] [--contact 1]
+//                [--variants all|short|block-jacobi|hybrid|explicit] [--explicit-span S]
 //                [--explicit-samples K] [--cg-tol 1e-2] [--cg-tol-max 0.1] [--progress]
 //                [--warm-state FILE] [--require-warm] [--save-end FILE]
 // With contact (the default) the sheet is self-avoiding as in crumple-sim (sites with sigma =
@@ -33,10 +33,15 @@
 // tenths of a second against 442 and 517 s measured over the whole second); once the sheet is
 // in contact the step size varies with the events and a short span can miss them (time the
 // whole interval there: --explicit-span 0). `--explicit-samples K` spreads K such spans evenly over
-// the interval, each started from the state the first hybrid variant reached there, so the scaled
-// figure sees the whole interval's stages rather than its first moments. A mass scale s makes
-// explicit steps sqrt(s) larger and the measured accelerations a / a_ref = m a lambda / ks s times
-// larger for the same motion, so the sheet rarely looks quasistatic: not the paper's regime.
+// the interval, each started from the state the first hybrid variant reached there and timed
+// there and then (the hybrid's clock stopped meanwhile), so the scaled figure sees the whole
+// interval's stages rather than its first moments, and the machine's conditions of the stretch
+// of the hybrid it is compared with (this VM's speed drifts by up to 2x over minutes).
+// --thickness sets h_eff (default 0.125 mm; the paper's Fig. 5 sheet is 0.25 mm), --mesh-seed
+// draws another mesh of the same sheet (the events, and so the hybrid's explicit stretches,
+// differ from mesh to mesh). A mass scale s makes explicit steps sqrt(s) larger and the measured
+// accelerations a / a_ref = m a lambda / ks s times larger for the same motion, so the sheet
+// rarely looks quasistatic: not the paper's regime.
 #include "protocols/integrator_stepper.hpp"
 #include "tests/bench/radial_sheet.hpp"
 #include "tests/bench/warm_state.hpp"
@@ -47,6 +52,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -82,7 +88,8 @@ struct RunStats {
 // Integrates `s` to t_end under the radial confinement stage (begun at t = 0). With
 // `progress`, prints a line per chunk. The interval is advanced in `chunks` equal pieces (0: ten
 // with `progress`, else one) by one integrator (its step history carries over; a chunk's end
-// only clips one step), and `at_chunk` sees the state at the start of each.
+// only clips one step), and `at_chunk` sees the state at the start of each; the time it takes
+// is not part of the wall time returned.
 double integrate(const RadialSheet& su, const IntegratorSettings& st, State& s, double t_end,
                  RunStats* out, bool with_contact, double force, bool progress = false,
                  int chunks = 0, const std::function<void(const State&)>& at_chunk = {}) {
@@ -97,18 +104,25 @@ double integrate(const RadialSheet& su, const IntegratorSettings& st, State& s, 
   const auto t0 = std::chrono::steady_clock::now();
   const double t_start = s.t;
   if (chunks <= 0) chunks = progress ? 10 : 1;
+  const auto since = [](std::chrono::steady_clock::time_point a) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
+  };
+  double outside = 0;  // in at_chunk
   for (int k = 1; k <= chunks; ++k) {
-    if (at_chunk) at_chunk(s);
+    if (at_chunk) {
+      const auto a = std::chrono::steady_clock::now();
+      at_chunk(s);
+      outside += since(a);
+    }
     integ.advance_to(s, k == chunks ? t_end : t_start + k * (t_end - t_start) / chunks);
     if (!progress) continue;
     const IntegratorSummary c = integ.summary();
     std::printf("    t = %.4g s: %ld steps (%ld explicit, %ld switches, %ld rejected), %.1f s wall "
                 "(implicit %.1f, explicit %.1f)\n",
-                s.t, c.steps(), c.steps_explicit, c.switches, c.rejections(),
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
+                s.t, c.steps(), c.steps_explicit, c.switches, c.rejections(), since(t0) - outside,
                 c.wall_implicit, c.wall_explicit);
   }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double wall = since(t0) - outside;
   if (out) {
     out->integ = integ.summary();
     if (contact) out->contact = contact->pairs->stats(), out->sites = contact->pairs->sites().size();
@@ -143,6 +157,7 @@ int main(int argc, char** argv) {
   double dt = 1.0, mass_scale = 1.0, force = 0.0, explicit_span = 0.0, thickness_mm = 0.125;
   double cg_tol = IntegratorSettings{}.cg_tol, cg_tol_max = IntegratorSettings{}.cg_tol_max;
   int samples = 1;
+  std::uint64_t mesh_seed = 1;
   bool with_contact = true, progress = false, require_warm = false;
   std::string which = "all", warm_path, end_path;
   CLI::App app{"bench_radial: radial confinement, explicit-only against the hybrid integrator"};
@@ -156,6 +171,8 @@ int main(int argc, char** argv) {
   app.add_option("--thickness", thickness_mm, "sheet thickness h_eff in mm (the paper's Fig. 5 "
                  "sheet: 0.25)")
       ->check(CLI::Range(0.01, 10.0));
+  app.add_option("--mesh-seed", mesh_seed, "seed of the mesh's interior points (another seed: "
+                 "another sample of the same sheet)");
   app.add_option("--force", force, "confining force per node in ks h_eff (0: the stage's default)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--contact", with_contact, "self-contact (1) or phantom sheet (0)");
@@ -174,8 +191,8 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--explicit-samples", samples,
                  "time explicit-only over this many spans of --explicit-span spread evenly over "
-                 "the interval, each from the state the first hybrid variant reached there, and "
-                 "scale their mean rate to dt")
+                 "the interval, each from the state the first hybrid variant reached there and "
+                 "timed when it got there, and scale their mean rate to dt")
       ->check(CLI::Range(1, 1000));
   app.add_option("--warm-state", warm_path,
                  "HDF5 file of the warm state at the first t0: read if it holds this mesh and "
@@ -202,10 +219,12 @@ int main(int argc, char** argv) {
   std::sort(starts.begin(), starts.end());
   omp_set_num_threads(threads);
   const double thickness = thickness_mm == 0.125 ? kRadialThickness : 1e-3 * thickness_mm;
-  const RadialSheet su = make_radial_sheet(nodes, mass_scale, thickness);
+  const RadialSheet su = make_radial_sheet(nodes, mass_scale, thickness, mesh_seed);
   State s = SheetModel(su.mesh, su.params).rest_state();
-  std::printf("radial confinement, %d nodes, %d threads, h_eff %g mm, mass scale %g, force %s, %s\n",
-              su.mesh.num_nodes(), omp_get_max_threads(), thickness_mm, mass_scale,
+  std::printf("radial confinement, %d nodes (mesh seed %llu), %d threads, h_eff %g mm, mass scale "
+              "%g, force %s, %s\n",
+              su.mesh.num_nodes(), static_cast<unsigned long long>(mesh_seed),
+              omp_get_max_threads(), thickness_mm, mass_scale,
               force > 0 ? (std::to_string(force) + " ks h_eff").c_str() : "the stage's default",
               with_contact ? "self-contact" : "phantom sheet");
   struct Variant {
@@ -217,8 +236,9 @@ int main(int argc, char** argv) {
   std::vector<Variant> variants{{"explicit only (RK4(3))", "cg", 18, true},
                                 {"hybrid, CG + block Jacobi 18", "block_jacobi", 18, false},
                                 {"hybrid, CG + two-level (18, 32)", "two_level", 18, false}};
-  // Sampled explicit-only starts from states of the first hybrid's trajectory: it runs right
-  // after that hybrid, so a long run that is stopped during a later variant still has the ratio.
+  // Sampled explicit-only starts from states of the first hybrid's trajectory and is timed while
+  // that hybrid runs; it is reported right after it, so a long run that is stopped during a later
+  // variant still has the ratio.
   if (which == "hybrid" || samples > 1) variants.erase(variants.begin());
   if (which == "explicit") variants.resize(1);
   if (which == "block-jacobi") variants.pop_back();
@@ -230,7 +250,7 @@ int main(int argc, char** argv) {
       variants.push_back(v);
   if (samples > 1)
     variants.insert(variants.begin() + 1, {"explicit only (RK4(3))", "cg", 18, true});
-  const std::string setup = warm_description(force, with_contact, mass_scale, thickness);
+  const std::string setup = warm_description(force, with_contact, mass_scale, thickness, mesh_seed);
   for (const double t0 : starts) {
     const bool keep = t0 == starts.front() && !warm_path.empty();
     auto w = keep ? load_warm_state(warm_path, su.mesh.num_nodes(), t0, setup, true) : std::nullopt;
@@ -267,7 +287,14 @@ int main(int argc, char** argv) {
     std::printf("%-34s %10s %8s %8s %10s %10s %8s %9s\n", "variant", "wall [s]", "steps", "expl.",
                 "newton/st", "cg/newton", "rejects", "speed-up");
     double explicit_wall = 0;
-    std::vector<State> snapshots;  // along the first hybrid's trajectory (--explicit-samples)
+    // --explicit-samples: explicit-only spans timed from the states the first hybrid reaches,
+    // each as soon as it reaches it. This VM's speed drifts by up to 2x over minutes: timed after
+    // the hybrid, the samples would see other conditions than the stretch they stand for.
+    struct Sample {
+      double t_from, t_to, wall;
+      RunStats stats;
+    };
+    std::vector<Sample> taken;
     std::vector<std::pair<const char*, double>> hybrid_walls;
     for (const Variant& v : variants) {
       RunStats rs;
@@ -278,22 +305,30 @@ int main(int argc, char** argv) {
             settings_for(v.solver, v.block, v.explicit_only, cg_tol, cg_tol_max);
         double measured = 0;
         if (sampled) {
-          for (State w : snapshots) {
-            const double t_from = w.t;
-            RunStats one;
-            const double m = integrate(su, st, w, t_from + span, &one, with_contact, force);
+          for (const Sample& one : taken) {
             std::printf("    explicit-only sample [%.4g, %.4g]: %.1f s wall, %ld steps (%.1f s "
-                        "scaled to dt)\n", t_from, w.t, m, one.integ.steps(), m * dt / span);
-            measured += m;
-            add_sample(rs, one);
+                        "scaled to dt)\n", one.t_from, one.t_to, one.wall, one.stats.integ.steps(),
+                        one.wall * dt / span);
+            measured += one.wall;
+            add_sample(rs, one.stats);
           }
         } else {
           State w = s;
           const bool first_hybrid = !v.explicit_only && hybrid_walls.empty();
-          const auto keep_state = [&](const State& x) { snapshots.push_back(x); };
+          const IntegratorSettings explicit_st =
+              settings_for("cg", 18, true, cg_tol, cg_tol_max);
+          const double sample_span = std::min(explicit_span, dt);
+          const auto take_sample = [&](const State& x) {
+            Sample one{x.t, 0, 0, {}};
+            State y = x;
+            one.wall = integrate(su, explicit_st, y, x.t + sample_span, &one.stats, with_contact,
+                                 force);
+            one.t_to = y.t;
+            taken.push_back(std::move(one));
+          };
           if (first_hybrid && samples > 1)
             measured = integrate(su, st, w, t0 + span, &rs, with_contact, force, progress, samples,
-                                 keep_state);
+                                 take_sample);
           else
             measured = integrate(su, st, w, t0 + span, &rs, with_contact, force, progress);
           // Block Jacobi 18 with the default tolerances: the warm-up's integrator, so its end
@@ -305,7 +340,7 @@ int main(int argc, char** argv) {
             std::printf("    (state at t = %g s written to %s)\n", w.t, end_path.c_str());
           }
         }
-        const double covered = sampled ? span * double(snapshots.size()) : span;
+        const double covered = sampled ? span * double(taken.size()) : span;
         const double wall = measured * dt / covered;
         if (v.explicit_only) explicit_wall = wall;
         else hybrid_walls.emplace_back(v.name, wall);
@@ -315,8 +350,8 @@ int main(int argc, char** argv) {
                     sum.rejections());
         if (!v.explicit_only && explicit_wall > 0) std::printf(" %8.1fx", explicit_wall / wall);
         if (sampled)
-          std::printf("   (scaled from %.1f s wall over %zu spans of %g s)", measured,
-                      snapshots.size(), span);
+          std::printf("   (scaled from %.1f s wall over %zu spans of %g s, each timed when the "
+                      "first hybrid reached its start)", measured, taken.size(), span);
         else if (span < dt)
           std::printf("   (scaled from %.1f s wall over [%g, %g])", measured, t0, t0 + span);
         std::printf("\n");

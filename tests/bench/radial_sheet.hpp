@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -25,10 +26,13 @@ struct RadialSheet {
 /// The benchmarks' default sheet thickness h_eff (m).
 inline constexpr double kRadialThickness = 1.25e-4;
 
+/// `mesh_seed` seeds the mesh's interior points: another seed is another sample of the same
+/// sheet (the events of a run, and with them the hybrid's explicit stretches, differ).
 inline RadialSheet make_radial_sheet(int nodes, double mass_scale,
-                                     double thickness = kRadialThickness) {
+                                     double thickness = kRadialThickness,
+                                     std::uint64_t mesh_seed = 1) {
   RadialSheet s;
-  s.mesh = generate_mesh(MeshSpec{"disk", 0.1, nodes, 1});
+  s.mesh = generate_mesh(MeshSpec{"disk", 0.1, nodes, mesh_seed});
   const double h = thickness, Y = 1e9, rho = 1400;
   const double kappa = Y * h * h * h / (12.0 * (1.0 - 1.0 / 9.0));
   s.params.ks = std::sqrt(3.0) / 2.0 * Y * h;
@@ -45,14 +49,17 @@ inline RadialSheet make_radial_sheet(int nodes, double mass_scale,
 }
 
 /// What a warm state was integrated with (bench_radial's warm-up: hybrid, block Jacobi 18); a
-/// state is reused only for the same setup. The thickness is named only when it is not the
-/// default 0.125 mm, so that states saved before it could be chosen keep their description.
+/// state is reused only for the same setup. The thickness and the mesh seed are named only when
+/// they are not the defaults, so that states saved before they could be chosen keep their
+/// description.
 inline std::string warm_description(double force, bool contact, double mass_scale,
-                                    double thickness = kRadialThickness) {
+                                    double thickness = kRadialThickness,
+                                    std::uint64_t mesh_seed = 1) {
   std::string d = "bench_radial warm-up, hybrid block Jacobi 18, force " + std::to_string(force) +
                   (contact ? ", contact" : ", phantom sheet") + ", mass scale " +
                   std::to_string(mass_scale);
   if (thickness != kRadialThickness) d += ", thickness " + std::to_string(thickness * 1e3) + " mm";
+  if (mesh_seed != 1) d += ", mesh seed " + std::to_string(mesh_seed);
   return d;
 }
 

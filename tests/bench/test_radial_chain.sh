@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # tests/bench/radial_chain.sh on a 100-node sheet: pieces chain through their end states (whose
 # times land above, on or below the next piece's decimal start), a rerun skips finished pieces
-# and redoes an unfinished one, the summary sums the pieces, and --thickness keeps sheets apart.
+# and redoes an unfinished one, the summary sums the pieces, and --thickness and
+# --mesh-seed keep sheets apart.
 #   test_radial_chain.sh BENCH_RADIAL
 set -euo pipefail
 bench=$1
@@ -52,6 +53,13 @@ tests/bench/radial_chain.sh --bench "$bench" --nodes 100 --from 0.06 --to 0.07 -
 grep -q "h_eff 0.25 mm" "$dir/thick/piece_0.0600.log" || fail "--thickness not passed on"
 grep -q "from t = 0 s to t0 = 0.06 s" "$dir/thick/piece_0.0600.log" ||
   fail "a 0.25 mm piece started from the 0.125 mm sheet's state"
+# Nor is it one for another mesh of the same sheet (bench_radial --mesh-seed).
+cp "$dir/chain/state_0.0600.h5" "$dir/seed2_warm.h5"
+"$bench" --nodes 100 --t0 0.06 --dt 0.01 --variants hybrid --mesh-seed 2 \
+  --warm-state "$dir/seed2_warm.h5" >"$dir/seed2.log" ||
+  fail "bench_radial --mesh-seed 2 failed"
+grep -q "from t = 0 s to t0 = 0.06 s" "$dir/seed2.log" ||
+  fail "mesh seed 2 started from the state of mesh seed 1"
 # Bad arguments are refused.
 if tests/bench/radial_chain.sh --bogus 1 2>/dev/null; then fail "--bogus accepted"; fi
 if tests/bench/radial_chain.sh --from 3 --to 3.13 --piece 0.05 2>/dev/null; then
