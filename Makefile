@@ -45,14 +45,16 @@ test-all: build
 # bench_radial at physical mass: the explicit-only variant is timed over ten spans of 0.01 s
 # spread over the interval (each from the block-Jacobi hybrid's state there) and scaled (its
 # step is set by stability); `bench_radial --help` for the rest. Its warm state at t0 is kept
-# (a second run skips the warm-up) and bench_precond solves on it.
+# (a second run skips the warm-up) and bench_precond solves on it. BENCH_THICKNESS is the sheet's
+# h_eff in mm (0.25: the paper's Fig. 5 sheet).
 BENCH_NODES ?= 3000
-BENCH_WARM = $(BUILD)/bench_radial_warm_$(BENCH_NODES).h5
-BENCH_RADIAL ?= --nodes $(BENCH_NODES) --explicit-span 0.01 --explicit-samples 10 --warm-state $(BENCH_WARM)
+BENCH_THICKNESS ?= 0.125
+BENCH_WARM = $(BUILD)/bench_radial_warm_$(BENCH_NODES)_h$(BENCH_THICKNESS).h5
+BENCH_RADIAL ?= --nodes $(BENCH_NODES) --thickness $(BENCH_THICKNESS) --explicit-span 0.01 --explicit-samples 10 --warm-state $(BENCH_WARM)
 bench: build
 	@for b in bench_assembly bench_contact; do echo "== $$b"; $(BUILD)/tests/bench/$$b || exit 1; done
 	@echo "== bench_radial"; $(BUILD)/tests/bench/bench_radial $(BENCH_RADIAL)
-	@echo "== bench_precond"; $(BUILD)/tests/bench/bench_precond --nodes $(BENCH_NODES) --warm-state $(BENCH_WARM)
+	@echo "== bench_precond"; $(BUILD)/tests/bench/bench_precond --nodes $(BENCH_NODES) --thickness $(BENCH_THICKNESS) --warm-state $(BENCH_WARM)
 
 include pipeline/reproduce.mk
 include pipeline/calibration/calibrate.mk

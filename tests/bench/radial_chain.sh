@@ -22,7 +22,7 @@
 #                               [--seed FILE] [--thickness MM]
 #                               [--bench build/tests/bench/bench_radial] [--summary]
 # --thickness is passed to bench_radial (its default when absent, 0.125 mm) and names the default
-# directory, build/radial_chain_NODES_hMM.
+# directory of any other sheet, build/radial_chain_NODES_hMM (also for --summary).
 # --summary prints the totals over the finished pieces without running anything.
 set -euo pipefail
 
@@ -44,6 +44,9 @@ while [ $# -gt 0 ]; do
     *) echo "radial_chain.sh: unknown argument '$1' (see the header of $0)" >&2; exit 2 ;;
   esac
 done
+# One spelling per sheet (0.25 = 0.250); the default sheet keeps the plain name and flags.
+[ -n "$thickness" ] && thickness=$(awk -v x="$thickness" 'BEGIN { printf "%g", x }')
+[ "$thickness" = 0.125 ] && thickness=""
 dir=${dir:-build/radial_chain_$nodes${thickness:+_h$thickness}}
 sheet=()
 [ -n "$thickness" ] && sheet=(--thickness "$thickness")

@@ -60,6 +60,15 @@ cp "$dir/chain/state_0.0600.h5" "$dir/seed2_warm.h5"
   fail "bench_radial --mesh-seed 2 failed"
 grep -q "from t = 0 s to t0 = 0.06 s" "$dir/seed2.log" ||
   fail "mesh seed 2 started from the state of mesh seed 1"
+# --explicit-samples: K spans timed along the first hybrid, reported after it.
+"$bench" --nodes 100 --t0 0.05 --dt 0.03 --variants block-jacobi --explicit-span 0.0005 \
+  --explicit-samples 3 --warm-state "$dir/chain/state_0.0500.h5" >"$dir/samples.log" ||
+  fail "bench_radial --explicit-samples 3 failed"
+[ "$(grep -c "explicit-only sample \[" "$dir/samples.log")" = 3 ] || fail "not 3 samples"
+grep -q "over 3 spans of 0.0005 s, each timed when the first hybrid" "$dir/samples.log" ||
+  fail "the sampled explicit-only row is missing"
+grep -q "^speed-up of hybrid, CG + block Jacobi 18 against explicit-only" "$dir/samples.log" ||
+  fail "no speed-up against the sampled explicit-only"
 # Bad arguments are refused.
 if tests/bench/radial_chain.sh --bogus 1 2>/dev/null; then fail "--bogus accepted"; fi
 if tests/bench/radial_chain.sh --from 3 --to 3.13 --piece 0.05 2>/dev/null; then
