@@ -19,7 +19,6 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cstdint>
 #include <cstdio>
 
 using namespace crumple;
@@ -64,8 +63,8 @@ double seconds(F&& f) {
 int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   int nodes = 3000, threads = 2, repeat = 3;
-  double t0 = 1.0, h = 1e-3, tol = 1e-2, thickness_mm = 0.125;
-  std::uint64_t mesh_seed = 1;
+  double t0 = 1.0, h = 1e-3, tol = 1e-2;
+  SheetChoice sheet;
   std::string warm_path;
   CLI::App app{"bench_precond: preconditioned CG on the reduced Newton matrix of a warm state"};
   app.add_option("--nodes", nodes, "mesh nodes")->check(CLI::Range(50, 10000000));
@@ -75,21 +74,19 @@ int main(int argc, char** argv) {
   app.add_option("--tol", tol, "CG relative residual")->check(CLI::PositiveNumber);
   app.add_option("--threads", threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   app.add_option("--repeat", repeat, "solves per preconditioner (median time)")->check(CLI::Range(1, 100));
-  app.add_option("--thickness", thickness_mm, "sheet thickness h_eff in mm, as bench_radial's")
-      ->check(CLI::Range(0.01, 10.0));
-  app.add_option("--mesh-seed", mesh_seed, "mesh seed, as bench_radial's");
+  add_sheet_options(app, sheet);  // as the bench_radial run that wrote the warm state
   CLI11_PARSE(app, argc, argv);
   omp_set_num_threads(threads);
-  const double thickness = thickness_mm == 0.125 ? kRadialThickness : 1e-3 * thickness_mm;
-  const RadialSheet su = make_radial_sheet(nodes, 1.0, thickness, mesh_seed);
+  const RadialSheet su = make_radial_sheet(nodes, 1.0, sheet);
   // The warm state bench_radial writes with its defaults otherwise (stage force, self-contact,
   // physical mass): the setup this program rebuilds.
   auto loaded = load_warm_state(warm_path, su.mesh.num_nodes(), t0,
-                                warm_description(0.0, true, 1.0, thickness, mesh_seed));
+                                warm_description(su, 0.0, true));
   if (!loaded) {
     std::fprintf(stderr, "bench_precond: %s holds no warm state of bench_radial's defaults with %d "
                  "nodes, h_eff %g mm and mesh seed %llu at t = %g\n", warm_path.c_str(),
-                 su.mesh.num_nodes(), thickness_mm, static_cast<unsigned long long>(mesh_seed), t0);
+                 su.mesh.num_nodes(), sheet.thickness_mm,
+                 static_cast<unsigned long long>(sheet.mesh_seed), t0);
     return 2;
   }
   State s = *loaded;

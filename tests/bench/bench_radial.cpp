@@ -52,7 +52,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -155,10 +154,10 @@ int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // lines show up at once when piped to a file
   int nodes = 3000, threads = 2;
   std::vector<double> starts{1.0};
-  double dt = 1.0, mass_scale = 1.0, force = 0.0, explicit_span = 0.0, thickness_mm = 0.125;
+  double dt = 1.0, mass_scale = 1.0, force = 0.0, explicit_span = 0.0;
   double cg_tol = IntegratorSettings{}.cg_tol, cg_tol_max = IntegratorSettings{}.cg_tol_max;
   int samples = 1;
-  std::uint64_t mesh_seed = 1;
+  SheetChoice sheet;
   bool with_contact = true, progress = false, require_warm = false;
   std::string which = "all", warm_path, end_path;
   CLI::App app{"bench_radial: radial confinement, explicit-only against the hybrid integrator"};
@@ -169,11 +168,7 @@ int main(int argc, char** argv) {
   app.add_option("--dt", dt, "length of each timed interval (s)")->check(CLI::PositiveNumber);
   app.add_option("--threads", threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   app.add_option("--mass-scale", mass_scale, "node mass / physical mass")->check(CLI::PositiveNumber);
-  app.add_option("--thickness", thickness_mm, "sheet thickness h_eff in mm (the paper's Fig. 5 "
-                 "sheet: 0.25)")
-      ->check(CLI::Range(0.01, 10.0));
-  app.add_option("--mesh-seed", mesh_seed, "seed of the mesh's interior points (another seed: "
-                 "another sample of the same sheet)");
+  add_sheet_options(app, sheet);
   app.add_option("--force", force, "confining force per node in ks h_eff (0: the stage's default)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--contact", with_contact, "self-contact (1) or phantom sheet (0)");
@@ -219,13 +214,12 @@ int main(int argc, char** argv) {
   }
   std::sort(starts.begin(), starts.end());
   omp_set_num_threads(threads);
-  const double thickness = thickness_mm == 0.125 ? kRadialThickness : 1e-3 * thickness_mm;
-  const RadialSheet su = make_radial_sheet(nodes, mass_scale, thickness, mesh_seed);
+  const RadialSheet su = make_radial_sheet(nodes, mass_scale, sheet);
   State s = SheetModel(su.mesh, su.params).rest_state();
   std::printf("radial confinement, %d nodes (mesh seed %llu), %d threads, h_eff %g mm, mass scale "
               "%g, force %s, %s\n",
-              su.mesh.num_nodes(), static_cast<unsigned long long>(mesh_seed),
-              omp_get_max_threads(), thickness_mm, mass_scale,
+              su.mesh.num_nodes(), static_cast<unsigned long long>(sheet.mesh_seed),
+              omp_get_max_threads(), sheet.thickness_mm, mass_scale,
               force > 0 ? (std::to_string(force) + " ks h_eff").c_str() : "the stage's default",
               with_contact ? "self-contact" : "phantom sheet");
   struct Variant {
@@ -251,7 +245,7 @@ int main(int argc, char** argv) {
       variants.push_back(v);
   if (samples > 1)
     variants.insert(variants.begin() + 1, {"explicit only (RK4(3))", "cg", 18, true});
-  const std::string setup = warm_description(force, with_contact, mass_scale, thickness, mesh_seed);
+  const std::string setup = warm_description(su, force, with_contact);
   for (const double t0 : starts) {
     const bool keep = t0 == starts.front() && !warm_path.empty();
     auto w = keep ? load_warm_state(warm_path, su.mesh.num_nodes(), t0, setup, true) : std::nullopt;
@@ -299,6 +293,7 @@ int main(int argc, char** argv) {
     std::string sample_error;  // a sample that failed ends the sampling, not the hybrid
     bool samples_due = samples > 1;  // taken along the first hybrid attempted, whatever its end
     const double explicit_run = explicit_span > 0 ? std::min(explicit_span, dt) : dt;
+    const IntegratorSettings explicit_st = settings_for("cg", 18, true, cg_tol, cg_tol_max);
     std::vector<std::pair<const char*, double>> hybrid_walls;
     for (const Variant& v : variants) {
       RunStats rs;
@@ -323,8 +318,6 @@ int main(int argc, char** argv) {
         } else {
           State w = s;
           const bool first_hybrid = !v.explicit_only && hybrid_walls.empty();
-          const IntegratorSettings explicit_st =
-              settings_for("cg", 18, true, cg_tol, cg_tol_max);
           const auto take_sample = [&](const State& x) {
             if (!sample_error.empty()) return;
             Sample one{x.t, 0, 0, {}};

@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
 
   const RadialSheet su = make_radial_sheet(nodes, 1.0);
   auto loaded = load_warm_state(warm_path, su.mesh.num_nodes(), 1e9,
-                                warm_description(0.0, true, 1.0), true);
+                                warm_description(su, 0.0, true), true);
   if (!loaded) {
     std::fprintf(stderr, "diag_switching: %s holds no warm state of bench_radial's defaults with "
                  "%d nodes\n", warm_path.c_str(), nodes);

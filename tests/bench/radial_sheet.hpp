@@ -1,6 +1,6 @@
 // The radial-confinement sheet of the benchmarks (paper Fig. 5a): a 10 cm disk, h_eff
-// 0.125 mm by default (the paper's Fig. 5 sheet is 0.25 mm thick, its Fig. 7 one 0.125 mm; the
-// issue allows either), Y = 1 GPa, density 1400 kg/m^3 with a mass scale, drag 0.01 and internal
+// 0.125 mm by default (SheetChoice; the paper's Fig. 5 sheet is 0.25 mm thick, its Fig. 7 one
+// 0.125 mm; the issue allows either), Y = 1 GPa, density 1400 kg/m^3 with a mass scale, drag 0.01 and internal
 // damping 0.1 of sqrt(ks m) as the protocol files' defaults.
 #pragma once
 
@@ -8,6 +8,8 @@
 #include "sim/contact/self_contact.hpp"
 #include "sim/io/params.hpp"
 #include "sim/mesh/generate.hpp"
+
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -17,23 +19,38 @@
 
 namespace crumple {
 
+/// Which radial sheet: its thickness and its mesh. The defaults are
+/// protocols/radial_confinement.yaml's sheet; the paper's Fig. 5 sheet is 0.25 mm thick, and
+/// another mesh seed is another sample of the same sheet (the events of a run, and with them the
+/// hybrid's explicit stretches, differ).
+struct SheetChoice {
+  double thickness_mm = 0.125;  ///< h_eff
+  std::uint64_t mesh_seed = 1;  ///< seed of the mesh's interior points
+};
+
+/// --thickness and --mesh-seed, for every program that builds or reloads a radial sheet.
+inline void add_sheet_options(CLI::App& app, SheetChoice& c) {
+  app.add_option("--thickness", c.thickness_mm, "sheet thickness h_eff in mm (the paper's Fig. 5 "
+                 "sheet: 0.25)")
+      ->check(CLI::Range(0.01, 10.0));
+  app.add_option("--mesh-seed", c.mesh_seed, "seed of the mesh's interior points (another seed: "
+                 "another sample of the same sheet)");
+}
+
 struct RadialSheet {
   Mesh mesh;
   ModelParams params;
   SheetInfo info;
+  SheetChoice choice;
+  double mass_scale = 1.0;
 };
 
-/// The benchmarks' default sheet thickness h_eff (m).
-inline constexpr double kRadialThickness = 1.25e-4;
-
-/// `mesh_seed` seeds the mesh's interior points: another seed is another sample of the same
-/// sheet (the events of a run, and with them the hybrid's explicit stretches, differ).
-inline RadialSheet make_radial_sheet(int nodes, double mass_scale,
-                                     double thickness = kRadialThickness,
-                                     std::uint64_t mesh_seed = 1) {
+inline RadialSheet make_radial_sheet(int nodes, double mass_scale, const SheetChoice& c = {}) {
   RadialSheet s;
-  s.mesh = generate_mesh(MeshSpec{"disk", 0.1, nodes, mesh_seed});
-  const double h = thickness, Y = 1e9, rho = 1400;
+  s.choice = c;
+  s.mass_scale = mass_scale;
+  s.mesh = generate_mesh(MeshSpec{"disk", 0.1, nodes, c.mesh_seed});
+  const double h = 1e-3 * c.thickness_mm, Y = 1e9, rho = 1400;
   const double kappa = Y * h * h * h / (12.0 * (1.0 - 1.0 / 9.0));
   s.params.ks = std::sqrt(3.0) / 2.0 * Y * h;
   s.params.kb = 2.0 * kappa / std::sqrt(3.0);
@@ -48,18 +65,18 @@ inline RadialSheet make_radial_sheet(int nodes, double mass_scale,
   return s;
 }
 
-/// What a warm state was integrated with (bench_radial's warm-up: hybrid, block Jacobi 18); a
-/// state is reused only for the same setup. The thickness and the mesh seed are named only when
-/// they are not the defaults, so that states saved before they could be chosen keep their
-/// description.
-inline std::string warm_description(double force, bool contact, double mass_scale,
-                                    double thickness = kRadialThickness,
-                                    std::uint64_t mesh_seed = 1) {
+/// What a warm state of `su` was integrated with (bench_radial's warm-up: hybrid, block Jacobi
+/// 18); a state is reused only for the same setup. The thickness and the mesh seed are named
+/// only when they are not the defaults, so that states saved before they could be chosen keep
+/// their description.
+inline std::string warm_description(const RadialSheet& su, double force, bool contact) {
   std::string d = "bench_radial warm-up, hybrid block Jacobi 18, force " + std::to_string(force) +
                   (contact ? ", contact" : ", phantom sheet") + ", mass scale " +
-                  std::to_string(mass_scale);
-  if (thickness != kRadialThickness) d += ", thickness " + std::to_string(thickness * 1e3) + " mm";
-  if (mesh_seed != 1) d += ", mesh seed " + std::to_string(mesh_seed);
+                  std::to_string(su.mass_scale);
+  if (su.choice.thickness_mm != SheetChoice{}.thickness_mm)
+    d += ", thickness " + std::to_string(su.choice.thickness_mm) + " mm";
+  if (su.choice.mesh_seed != SheetChoice{}.mesh_seed)
+    d += ", mesh seed " + std::to_string(su.choice.mesh_seed);
   return d;
 }
 
