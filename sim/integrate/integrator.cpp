@@ -4,6 +4,7 @@
 
 #include "sim/core/errors.hpp"
 #include "sim/integrate/bdf.hpp"
+#include "sim/integrate/step_toward.hpp"
 
 #include <omp.h>
 
@@ -114,7 +115,7 @@ void Integrator::advance_to(State& s, double t_end) {
   while (t_end - s.t > t_eps) {
     int rejections = 0;
     Attempt a;
-    double h = 0;
+    double h = 0, proposal = 0;
     for (;;) {
       if (before_step) {
         const double wb = omp_get_wtime();
@@ -128,9 +129,18 @@ void Integrator::advance_to(State& s, double t_end) {
       // every term, would otherwise follow each change of the candidate list). The Newton
       // system rebinds itself to a rebuilt pattern.
       if (implicit) model_.rebuild_pattern();
-      h = std::min(hist_.h, t_end - s.t);
-      // Avoid a sliver of a last step: split the remainder in two instead.
-      if (t_end - s.t > h && t_end - s.t < 1.5 * h) h = 0.5 * (t_end - s.t);
+      // The controller's proposal, held to the zero-stability growth limit of variable-step
+      // BDF (bdf_growth_limit) over the last step, which may have been shortened to land on an
+      // interval's end; the steps onto this interval's end are planned so that none is a
+      // sliver (step_toward.hpp).
+      proposal = hist_.h;
+      double first = proposal, max_ratio = settings_.max_growth;
+      if (implicit && hist_.times.size() >= 2) {
+        const int order = std::min(settings_.bdf_order, static_cast<int>(hist_.times.size()) - 1);
+        max_ratio = std::min(max_ratio, bdf_growth_limit(order));
+        first = std::min(first, max_ratio * (hist_.times[0] - hist_.times[1]));
+      }
+      h = step_toward(t_end - s.t, first, proposal, max_ratio);
       a = Attempt{};
       const double wa = omp_get_wtime();
       if (implicit) {
@@ -166,7 +176,11 @@ void Integrator::advance_to(State& s, double t_end) {
         // iteration over the target, shrink it beyond (the error estimate alone cannot see this).
         if (implicit && a.newton_iters > settings_.newton_target)
           fac = std::min(fac, a.newton_iters == settings_.newton_target + 1 ? 1.0 : 0.7);
-        hist_.h = std::clamp(h * std::min(fac, growth), settings_.h_min,
+        // A step cut short of the proposal (to land on t_end, or by the growth limit above)
+        // tells the error-limited step h * fac all the same, but is no reason to shrink the
+        // proposal: it grows from the larger of the two, and the next step is held to the
+        // growth limit over this one when it is taken.
+        hist_.h = std::clamp(std::min(h * fac, std::max(h, proposal) * growth), settings_.h_min,
                              settings_.h_max);
         break;
       }

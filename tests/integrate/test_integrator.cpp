@@ -1,7 +1,8 @@
 // The hybrid integrator on small sheets (sim/integrate/integrator.hpp): energy conservation of
 // undamped explicit dynamics, monotone quasistatic relaxation, plastic flow with yield and
-// memory, implicit -> explicit -> implicit switching, rejection of non-SPD steps, the
-// NumericalFailure path, and bit-for-bit resume from a stored history.
+// memory, implicit -> explicit -> implicit switching, step control (BDF growth limits, slow
+// Newton, interval ends), rejection of non-SPD steps, the NumericalFailure path, and bit-for-bit
+// resume from a stored history.
 #include "sim/core/errors.hpp"
 #include "sim/integrate/bdf.hpp"
 #include "sim/integrate/integrator.hpp"
@@ -146,6 +147,41 @@ TEST(Integrator, SlowNewtonStepsDoNotGrowTheStep) {
               grew_elsewhere);
   EXPECT_GE(slow, 3);
   EXPECT_GE(grew_elsewhere, 3);  // the rule holds h back only where Newton was slow
+}
+
+// Step control at interval ends: advancing in chunks (output frames, stage checks) costs little
+// more than one call. The steps onto a chunk end are planned (step_toward.hpp), and a step cut
+// short to land there does not lower the proposal; clipping the overshooting step instead left a
+// short step from which h had to grow back at the BDF growth limit. Two regimes:
+// - h held by h_max, a chunk 1.3 h_max: at most one step per chunk more than one call takes
+//   (two steps per chunk; clipping took 246 steps where one call takes 136, planning 192);
+// - h growing (relaxation towards rest), chunks shorter than one call's steps: at most two steps
+//   per chunk, the fewest the growth limit allows once h is below chunk / 1.22 (landing steps
+//   a + b = chunk with b <= 1.22 a leave b <= 0.55 chunk); clipping took three (1218 steps for
+//   400 chunks, planning 823).
+TEST(Integrator, AdvancingInChunksCostsFewExtraSteps) {
+  auto steps = [](double h_max, double chunk, int chunks, long& whole, long& chunked) {
+    SheetModel model(sheet(), params(1.0));
+    IntegratorSettings st = no_switching(IntegrationMode::Implicit);
+    st.h_max = h_max;
+    Integrator one(model, st);
+    State a = stretched_and_bent(model);
+    one.advance_to(a, chunk * chunks);
+    Integrator many(model, st);
+    State b = stretched_and_bent(model);
+    for (int k = 1; k <= chunks; ++k) many.advance_to(b, chunk * k);
+    whole = static_cast<long>(one.log().size());
+    chunked = static_cast<long>(many.log().size());
+    std::printf("[0, %g] in one call: %ld steps; in %d chunks: %ld steps\n", chunk * chunks,
+                whole, chunks, chunked);
+    EXPECT_NEAR(b.t, chunk * chunks, 1e-12);
+    EXPECT_LT((a.x - b.x).lpNorm<Eigen::Infinity>(), 1e-3);  // the same relaxation
+  };
+  long whole = 0, chunked = 0;
+  steps(0.05, 1.3 * 0.05, 80, whole, chunked);
+  EXPECT_LE(chunked, whole + 80);
+  steps(100.0, 0.011, 400, whole, chunked);
+  EXPECT_LE(chunked, whole + 2 * 400);
 }
 
 // Inexact Newton (forcing.hpp): solving the Newton iterations after the first loosely (to half

@@ -1,0 +1,43 @@
+// The size of the next step towards the end of an advance_to interval (integrator.cpp).
+//
+// Callers advance in chunks (output frames, stage checks, progress lines), and each chunk end
+// must be reached exactly. Clipping the step that would overshoot leaves a short last step,
+// often a sliver of the controller's h, and variable-step BDF may then grow h back by at most
+// bdf_growth_limit per step (1.22 at order 4): several extra steps after every chunk end
+// (radial benchmark at 12000 nodes, 0.1 s all quasistatic advanced in ten chunks: 54 steps
+// where one call took 30; 41 with the planned steps below).
+// Instead, once the rest of the interval fits in a few steps, the steps onto it are planned:
+// the fastest admissible sequence (the first step `first`, each next one growing by at most
+// `growth` up to the controller's `proposal`) is scaled down until it ends exactly on the end.
+// With growth 1 (or first = proposal) these are n equal steps, each at least (n - 1) / n of the
+// controller's step; no step is a sliver, and no ratio of consecutive steps exceeds `growth`.
+#pragma once
+
+#include <algorithm>
+
+namespace crumple {
+
+/// Step towards an end `remaining` ahead. `first` (<= `proposal`) is the largest admissible next
+/// step, `proposal` the controller's step, `growth` (>= 1) the largest ratio of consecutive
+/// steps. The whole rest if it fits in one step; else, if the rest fits in n <= max_steps
+/// planned steps, the first of them scaled so that the n end on it; else `first`.
+inline double step_toward(double remaining, double first, double proposal, double growth,
+                          int max_steps = 4) {
+  // Within rounding of `first`: one step (a scaled plan's last step must not leave a sliver).
+  if (remaining <= first * (1 + 1e-12)) return remaining;
+  double planned = first, sum = first;
+  for (int n = 2; n <= max_steps; ++n) {
+    planned = std::min(proposal, growth * planned);
+    sum += planned;
+    // Rounding must not turn an exact fit into one step more.
+    if (sum >= remaining * (1 - 1e-12)) return first * std::min(1.0, remaining / sum);
+  }
+  return first;
+}
+
+/// Equal steps: the controller's step h with no growth to plan.
+inline double step_toward(double remaining, double h, int max_steps = 4) {
+  return step_toward(remaining, h, h, 1.0, max_steps);
+}
+
+}  // namespace crumple
