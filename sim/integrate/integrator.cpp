@@ -140,7 +140,7 @@ void Integrator::advance_to(State& s, double t_end) {
         max_ratio = std::min(max_ratio, bdf_growth_limit(order));
         first = std::min(first, max_ratio * (hist_.times[0] - hist_.times[1]));
       }
-      h = step_toward(t_end - s.t, first, proposal, max_ratio);
+      h = step_toward(t_end - s.t, first, proposal, max_ratio, t_eps);
       a = Attempt{};
       const double wa = omp_get_wtime();
       if (implicit) {
@@ -158,12 +158,16 @@ void Integrator::advance_to(State& s, double t_end) {
         const int next_order = std::min(settings_.bdf_order, static_cast<int>(hist_.times.size()));
         const double growth = implicit ? std::min(settings_.max_growth, bdf_growth_limit(next_order))
                                        : settings_.max_growth;
+        // A step cut short of the proposal (to land on t_end, or by the growth limit above)
+        // has a smaller error than the proposal would have had (see `next` below).
+        const bool shortened = h < proposal * (1 - 1e-12);
         double fac = a.err > 0 ? 0.9 * std::pow(a.err, -exponent) : growth;
-        if (!implicit) {
+        if (!implicit && !shortened) {
           // Explicit steps are mostly limited by stability (the stiff in-plane springs), where
           // the elementary controller above oscillates about the limit and rejects about every
           // other step. The PI controller (Gustafsson; Hairer-Wanner II, §IV.2) damps that with
-          // the previous error: h_new = h 0.9 err^(-0.7/k) err_prev^(0.4/k), k = 4.
+          // the previous error: h_new = h 0.9 err^(-0.7/k) err_prev^(0.4/k), k = 4. (A shortened
+          // step's error would pull both factors down: it uses the elementary one.)
           const double e = std::max(a.err, 1e-10);
           if (hist_.err_prev > 0)
             fac = 0.9 * std::pow(e, -0.7 / 4) * std::pow(hist_.err_prev, 0.4 / 4);
@@ -176,12 +180,13 @@ void Integrator::advance_to(State& s, double t_end) {
         // iteration over the target, shrink it beyond (the error estimate alone cannot see this).
         if (implicit && a.newton_iters > settings_.newton_target)
           fac = std::min(fac, a.newton_iters == settings_.newton_target + 1 ? 1.0 : 0.7);
-        // A step cut short of the proposal (to land on t_end, or by the growth limit above)
-        // tells the error-limited step h * fac all the same, but is no reason to shrink the
-        // proposal: it grows from the larger of the two, and the next step is held to the
-        // growth limit over this one when it is taken.
-        hist_.h = std::clamp(std::min(h * fac, std::max(h, proposal) * growth), settings_.h_min,
-                             settings_.h_max);
+        // A shortened step is no reason to shrink the proposal: h * fac (the error-limited step
+        // by the elementary controller) lets it stay or grow by `growth`, and the next
+        // quasistatic step is held to the growth limit over this one when it is taken (first,
+        // above). Otherwise the step grows from itself.
+        const double next =
+            shortened ? std::min(h * fac, proposal * growth) : h * std::min(fac, growth);
+        hist_.h = std::clamp(next, settings_.h_min, settings_.h_max);
         break;
       }
       ++rejections;

@@ -28,7 +28,10 @@ struct IntegratorSettings {
   double h_init = 1e-4;      ///< first step, s
   double h_min = 1e-12;      ///< below this a failing step throws NumericalFailure, s
   double h_max = 1e-1;       ///< s
-  double max_growth = 2.0;   ///< largest ratio of consecutive steps (BDF orders 2-4: bdf_growth_limit)
+  /// largest ratio of consecutive quasistatic steps (orders 2-4: also bdf_growth_limit) and of
+  /// the controller's step over the last one; an explicit step after one shortened to land on
+  /// an interval's end may return to the step proposed before (RK4 has no ratio limit)
+  double max_growth = 2.0;
   double newton_tol = 0.1;   ///< converged when the weighted RMS of (dx, dp) <= newton_tol
   int newton_max_iters = 8;
   int newton_target = 2;     ///< an accepted step that needed more Newton iterations does not grow h

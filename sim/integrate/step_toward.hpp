@@ -11,33 +11,33 @@
 // `growth` up to the controller's `proposal`) is scaled down until it ends exactly on the end.
 // With growth 1 (or first = proposal) these are n equal steps, each at least (n - 1) / n of the
 // controller's step; no step is a sliver, and no ratio of consecutive steps exceeds `growth`.
+//
+// `tol` is an absolute time: the rest is t_end - t, rounded to about an ulp of t, and a plan
+// that fits within tol is taken as exact. (A tolerance relative to the rest is not enough at
+// large t: an exact two-step fit then looked like three, the shortened last step held the next
+// chunk's first step, and the steps shrank chunk after chunk.)
 #pragma once
 
 #include <algorithm>
 
 namespace crumple {
 
-/// Step towards an end `remaining` ahead. `first` (<= `proposal`) is the largest admissible next
-/// step, `proposal` the controller's step, `growth` (>= 1) the largest ratio of consecutive
-/// steps. The whole rest if it fits in one step; else, if the rest fits in n <= max_steps
-/// planned steps, the first of them scaled so that the n end on it; else `first`.
+/// Step towards an end `remaining` ahead (> 0). `first` (<= `proposal`) is the largest
+/// admissible next step, `proposal` the controller's step, `growth` (>= 1) the largest ratio of
+/// consecutive steps, `tol` the absolute rounding tolerance of `remaining`. Returns the whole
+/// rest if it fits in one step (at most first + tol); else, if it fits in n <= max_steps planned
+/// steps, the first of them scaled so that the n end on it; else `first`.
 inline double step_toward(double remaining, double first, double proposal, double growth,
-                          int max_steps = 4) {
-  // Within rounding of `first`: one step (a scaled plan's last step must not leave a sliver).
-  if (remaining <= first * (1 + 1e-12)) return remaining;
+                          double tol, int max_steps = 4) {
+  if (remaining <= first + tol) return remaining;
   double planned = first, sum = first;
-  for (int n = 2; n <= max_steps; ++n) {
+  for (int n = 1; n < max_steps; ++n) {
     planned = std::min(proposal, growth * planned);
     sum += planned;
-    // Rounding must not turn an exact fit into one step more.
-    if (sum >= remaining * (1 - 1e-12)) return first * std::min(1.0, remaining / sum);
+    // A plan short of the end by rounding only takes `first`; the last step absorbs the rest.
+    if (sum >= remaining - tol) return first * std::min(1.0, remaining / sum);
   }
   return first;
-}
-
-/// Equal steps: the controller's step h with no growth to plan.
-inline double step_toward(double remaining, double h, int max_steps = 4) {
-  return step_toward(remaining, h, h, 1.0, max_steps);
 }
 
 }  // namespace crumple
