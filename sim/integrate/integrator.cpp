@@ -140,7 +140,8 @@ void Integrator::advance_to(State& s, double t_end) {
         max_ratio = std::min(max_ratio, bdf_growth_limit(order));
         first = std::min(first, max_ratio * (hist_.times[0] - hist_.times[1]));
       }
-      h = step_toward(t_end - s.t, first, proposal, max_ratio, t_eps);
+      h = step_toward(t_end - s.t, first, proposal, max_ratio,
+                      rejections > 0 ? 0.0 : landing_tolerance(t_end));
       a = Attempt{};
       const double wa = omp_get_wtime();
       if (implicit) {
@@ -180,10 +181,11 @@ void Integrator::advance_to(State& s, double t_end) {
         // iteration over the target, shrink it beyond (the error estimate alone cannot see this).
         if (implicit && a.newton_iters > settings_.newton_target)
           fac = std::min(fac, a.newton_iters == settings_.newton_target + 1 ? 1.0 : 0.7);
-        // A shortened step is no reason to shrink the proposal: h * fac (the error-limited step
-        // by the elementary controller) lets it stay or grow by `growth`, and the next
-        // quasistatic step is held to the growth limit over this one when it is taken (first,
-        // above). Otherwise the step grows from itself.
+        // After a shortened step the proposal is the smaller of h * fac (the error-limited step
+        // by the elementary controller, or h held / cut after slow Newton) and the proposal
+        // grown by `growth`, not a growth from the shortened step; the next quasistatic step is
+        // held to the growth limit over this one when it is taken (first, above). Otherwise
+        // the step grows from itself.
         const double next =
             shortened ? std::min(h * fac, proposal * growth) : h * std::min(fac, growth);
         hist_.h = std::clamp(next, settings_.h_min, settings_.h_max);

@@ -29,8 +29,9 @@ struct IntegratorSettings {
   double h_min = 1e-12;      ///< below this a failing step throws NumericalFailure, s
   double h_max = 1e-1;       ///< s
   /// largest ratio of consecutive quasistatic steps (orders 2-4: also bdf_growth_limit) and of
-  /// the controller's step over the last one; an explicit step after one shortened to land on
-  /// an interval's end may return to the step proposed before (RK4 has no ratio limit)
+  /// the controller's step over the last one; after a step shortened to land on an interval's
+  /// end the controller grows the step it had proposed, so the explicit step after it may be
+  /// up to max_growth times that proposal (RK4 has no ratio limit)
   double max_growth = 2.0;
   double newton_tol = 0.1;   ///< converged when the weighted RMS of (dx, dp) <= newton_tol
   int newton_max_iters = 8;

@@ -15,12 +15,22 @@
 // `tol` is an absolute time: the rest is t_end - t, rounded to about an ulp of t, and a plan
 // that fits within tol is taken as exact. (A tolerance relative to the rest is not enough at
 // large t: an exact two-step fit then looked like three, the shortened last step held the next
-// chunk's first step, and the steps shrank chunk after chunk.)
+// chunk's first step, and the steps shrank chunk after chunk.) It must stay a few ulps: a rest
+// within tol of a step is taken whole, so a tolerance of many steps' size would make a retry
+// after a rejection take the same step again (the integrator passes 0 on retries).
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace crumple {
+
+/// The rounding tolerance of t_end - t for times up to |t_end|: 16 ulps (a plan of up to four
+/// steps, each landing t = t + h rounded, stays well inside it).
+inline double landing_tolerance(double t_end) {
+  return 16 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t_end));
+}
 
 /// Step towards an end `remaining` ahead (> 0). `first` (<= `proposal`) is the largest
 /// admissible next step, `proposal` the controller's step, `growth` (>= 1) the largest ratio of

@@ -12,8 +12,9 @@ using namespace crumple;
 
 namespace {
 
-// The rest of an interval near t = 1, as the integrator passes it.
-constexpr double kTol = 1e-13;
+// The rounding tolerance for intervals ending near t = 1 (landing_tolerance(1) is 3.6e-15;
+// these cases do their own arithmetic at about that level).
+constexpr double kTol = 1e-14;
 
 // Equal steps: the controller's step h and nothing to grow.
 double equal_step(double remaining, double h) { return step_toward(remaining, h, h, 1.0, kTol); }
@@ -116,7 +117,16 @@ TEST(StepToward, PlannedStepsGrowWithinTheRatioAndLand) {
 // fit (first, then growth * first) must stay two steps with the integrator's tolerance there.
 TEST(StepToward, ExactFitAtLargeTimeIsNotOneStepMore) {
   const double first = 0.0029637337063726931, growth = 1.22;
-  const double rest = 0.0065794888281658359;  // first + growth * first, up to 2.8e-12
-  const double dt = step_toward(rest, first, 100.0, growth, 1e-13 * 50);
+  // first + growth * first, 1.8e-14 short (2.8e-12 of the rest: more than a tolerance relative
+  // to the rest allowed, less than the absolute one at t = 50).
+  const double rest = 0.0065794888281658359;
+  const double dt = step_toward(rest, first, 100.0, growth, landing_tolerance(50.0));
   EXPECT_NEAR(dt, first, 1e-11);
+}
+
+// A retry after a rejection passes no tolerance: the cut step is taken, not a rest within
+// rounding of it (with a tolerance of several steps, retries repeated one rejected step).
+TEST(StepToward, NoToleranceTakesTheCutStep) {
+  EXPECT_EQ(step_toward(1.2e-11, 3e-12, 3e-12, 2.0, 0.0), 3e-12);
+  EXPECT_EQ(step_toward(3e-12, 3e-12, 3e-12, 2.0, 0.0), 3e-12);
 }
