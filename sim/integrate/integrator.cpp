@@ -112,6 +112,13 @@ void Integrator::advance_to(State& s, double t_end) {
   const double wall0 = omp_get_wtime();
   sync_history(s);
   const double t_eps = 1e-13 * std::max(1.0, std::abs(t_end));
+  // The largest ratio of a step over the one before, for a step taken with `points` history
+  // points: quasistatic steps of order 2-4 are held to bdf_growth_limit (zero-stability of
+  // variable-step BDF, order = points - 1 up to bdf_order), and every step to max_growth.
+  const auto ratio_limit = [&](bool implicit, std::size_t points) {
+    const int order = std::max(1, std::min(settings_.bdf_order, static_cast<int>(points) - 1));
+    return implicit ? std::min(settings_.max_growth, bdf_growth_limit(order)) : settings_.max_growth;
+  };
   while (t_end - s.t > t_eps) {
     int rejections = 0;
     Attempt a;
@@ -134,12 +141,10 @@ void Integrator::advance_to(State& s, double t_end) {
       // interval's end; the steps onto this interval's end are planned so that none is a
       // sliver (step_toward.hpp).
       proposal = hist_.h;
-      double first = proposal, max_ratio = settings_.max_growth;
-      if (implicit && hist_.times.size() >= 2) {
-        const int order = std::min(settings_.bdf_order, static_cast<int>(hist_.times.size()) - 1);
-        max_ratio = std::min(max_ratio, bdf_growth_limit(order));
+      const double max_ratio = ratio_limit(implicit, hist_.times.size());
+      double first = proposal;
+      if (implicit && hist_.times.size() >= 2)
         first = std::min(first, max_ratio * (hist_.times[0] - hist_.times[1]));
-      }
       h = step_toward(t_end - s.t, first, proposal, max_ratio,
                       rejections > 0 ? 0.0 : landing_tolerance(t_end));
       a = Attempt{};
@@ -154,11 +159,8 @@ void Integrator::advance_to(State& s, double t_end) {
       }
       const double exponent = implicit ? 1.0 / (a.order + 1) : 0.25;
       if (a.ok && a.err <= 1.0) {
-        // The next quasistatic step's order (its history gains this step's point) bounds how
-        // much h may grow (bdf_growth_limit: zero-stability of variable-step BDF).
-        const int next_order = std::min(settings_.bdf_order, static_cast<int>(hist_.times.size()));
-        const double growth = implicit ? std::min(settings_.max_growth, bdf_growth_limit(next_order))
-                                       : settings_.max_growth;
+        // The next step's history gains this step's point.
+        const double growth = ratio_limit(implicit, hist_.times.size() + 1);
         // A step cut short of the proposal (to land on t_end, or by the growth limit above)
         // has a smaller error than the proposal would have had (see `next` below).
         const bool shortened = h < proposal * (1 - 1e-12);

@@ -49,6 +49,15 @@ State stretched_and_bent(const SheetModel& model) {
   return s;
 }
 
+// The rest state with every coordinate moved by amplitude * N(0, 1), seeded.
+State jiggled(const SheetModel& model, double amplitude, unsigned seed) {
+  State s = model.rest_state();
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> N(0, 1);
+  for (Index k = 0; k < s.x.size(); ++k) s.x[k] += amplitude * N(rng);
+  return s;
+}
+
 IntegratorSettings no_switching(IntegrationMode mode) {
   IntegratorSettings st;
   st.mode_initial = mode;
@@ -66,10 +75,7 @@ TEST(Integrator, UndampedExplicitDynamicsConservesEnergy) {
   st.h_max = 1.0;
   st.plasticity = false;  // plastic flow dissipates bending energy; this test is about RK4
   Integrator integ(model, st);
-  State s = model.rest_state();
-  std::mt19937_64 rng(4);
-  std::normal_distribution<double> N(0, 1);
-  for (Index k = 0; k < s.x.size(); ++k) s.x[k] += 0.02 * N(rng);
+  State s = jiggled(model, 0.02, 4);
   const double e0 = model.energies(s).total();
   while (integ.log().size() < 1000) integ.advance_to(s, s.t + 1.0);
   const double e1 = model.energies(s).total();
@@ -203,10 +209,7 @@ TEST(Integrator, AdvancingExplicitStepsInChunksCostsFewExtraSteps) {
   st.explicit_rtol = 1e-3;
   st.h_max = 100;
   st.plasticity = false;
-  State s0 = model.rest_state();
-  std::mt19937_64 rng(4);
-  std::normal_distribution<double> N(0, 1);
-  for (Index k = 0; k < s0.x.size(); ++k) s0.x[k] += 0.02 * N(rng);
+  const State s0 = jiggled(model, 0.02, 4);
   const int chunks = 66;
   const double chunk = 0.3;
   Integrator one(model, st);
