@@ -62,16 +62,18 @@ class Section {
     }
   }
 
-  void number(const char* key, double& out, double lo, double hi, bool lo_open = false) {
+  void number(const char* key, double& out, double lo, double hi, bool lo_open = false,
+              bool hi_open = false) {
     const YAML::Node n = get(key);
     if (!n) return;
     double v;
     if (!parse(n, v)) ctx_.fail(n, dotted(key), "expected a number, got " + scalar_text(n));
     const bool low = lo_open ? !(v > lo) : !(v >= lo);
-    if (low || v > hi) {
+    const bool high = hi_open ? !(v < hi) : !(v <= hi);
+    if (low || high) {
       std::ostringstream os;
       os << "must be " << (lo_open ? "> " : ">= ") << lo;
-      if (std::isfinite(hi)) os << " and <= " << hi;
+      if (std::isfinite(hi)) os << (hi_open ? " and < " : " and <= ") << hi;
       os << ", got " << n.Scalar();
       ctx_.fail(n, dotted(key), os.str());
     }
@@ -204,10 +206,10 @@ Params parse(YAML::Node root, Context& ctx) {
 
   Section in(root, "integrator", ctx,
              {"mode_initial", "bdf_order", "rtol", "atol", "h_init", "h_min", "h_max",
-              "max_growth", "newton_tol", "newton_max_iters", "newton_target", "linear_solver", "block_size",
-              "coarse_nodes", "cg_tol", "cg_tol_max", "cg_max_iters", "switch_up", "switch_down", "switch_window",
-              "switch_min_steps", "explicit_rtol", "plasticity", "plastic_c0", "plastic_gamma",
-              "plastic_rate"});
+              "max_growth", "newton_tol", "newton_max_iters", "newton_target", "linear_solver",
+              "block_size", "coarse_nodes", "cg_tol", "cg_tol_max", "cg_max_iters", "switch_up",
+              "switch_down", "switch_window", "switch_min_steps", "explicit_rtol",
+              "plasticity", "plastic_c0", "plastic_gamma", "plastic_rate"});
   auto& s = p.integrator;
   std::string mode = s.mode_initial == IntegrationMode::Implicit ? "implicit" : "explicit";
   in.text("mode_initial", mode, {"implicit", "explicit"});
@@ -227,8 +229,8 @@ Params parse(YAML::Node root, Context& ctx) {
   s.linear_solver = parse_linear_solver(solver);
   in.integer("block_size", s.block_size, 3, 1e6);
   in.integer("coarse_nodes", s.coarse_nodes, 3, 1e9);
-  in.number("cg_tol", s.cg_tol, 0, 1, true);
-  in.number("cg_tol_max", s.cg_tol_max, 0, 1, true);
+  in.number("cg_tol", s.cg_tol, 0, 1, true, true);
+  in.number("cg_tol_max", s.cg_tol_max, 0, 1, true, true);
   in.integer("cg_max_iters", s.cg_max_iters, 1, 1e9);
   in.number("switch_up", s.switch_up, 0, kInf, true);
   in.number("switch_down", s.switch_down, 0, kInf);
@@ -236,14 +238,36 @@ Params parse(YAML::Node root, Context& ctx) {
   in.integer("switch_min_steps", s.switch_min_steps, 0, 1e9);
   in.number("explicit_rtol", s.explicit_rtol, 0, kInf, true);
   in.flag("plasticity", s.plasticity);
-  in.number("plastic_c0", s.plastic_c0, 0, 2);
+  in.number("plastic_c0", s.plastic_c0, 0, 2, false, true);  // f divides by 2 - c0 (eq. 19)
   in.number("plastic_gamma", s.plastic_gamma, 0, kInf);
   in.number("plastic_rate", s.plastic_rate, 0, kInf, true);
-  if (s.h_min > s.h_max) ctx.fail(in.get("h_min") ? in.get("h_min") : root, "integrator.h_min",
-                                  "must not exceed integrator.h_max");
-  if (s.cg_tol > s.cg_tol_max)
-    ctx.fail(in.get("cg_tol") ? in.get("cg_tol") : root, "integrator.cg_tol",
-             "must not exceed integrator.cg_tol_max (" + std::to_string(s.cg_tol_max) + ")");
+  // Relations between keys: the error names the first of the pair that the file sets (its line),
+  // else the other, else the top of the file (both defaults, which cannot happen).
+  const auto relation = [&](bool ok, const char* a, const char* b, const std::string& what) {
+    if (ok) return;
+    const YAML::Node na = in.get(a), nb = in.get(b);
+    const char* key = na ? a : (nb ? b : a);
+    ctx.fail(na ? na : (nb ? nb : root), in.dotted(key), what);
+  };
+  const auto num = [](double v) {
+    std::ostringstream os;
+    os << v;
+    return os.str();
+  };
+  relation(s.h_min <= s.h_max, "h_min", "h_max",
+           "need integrator.h_min <= integrator.h_max, got " + num(s.h_min) + " > " + num(s.h_max));
+  relation(s.h_min <= s.h_init, "h_init", "h_min",
+           "need integrator.h_min <= integrator.h_init, got " + num(s.h_min) + " > " +
+               num(s.h_init));
+  relation(s.h_init <= s.h_max, "h_init", "h_max",
+           "need integrator.h_init <= integrator.h_max, got " + num(s.h_init) + " > " +
+               num(s.h_max));
+  relation(s.cg_tol <= s.cg_tol_max, "cg_tol", "cg_tol_max",
+           "need integrator.cg_tol <= integrator.cg_tol_max, got " + num(s.cg_tol) + " > " +
+               num(s.cg_tol_max));
+  relation(s.switch_down < s.switch_up, "switch_down", "switch_up",
+           "need integrator.switch_down < integrator.switch_up, got " + num(s.switch_down) +
+               " >= " + num(s.switch_up));
 
   Section ct(root, "contact", ctx, {"enabled", "sigma", "refinement", "stiffness", "skin",
                                           "fold_barrier"});

@@ -78,9 +78,43 @@ TEST(Config, DirectConstantsComeTogether) {
 
 TEST(Config, CgToleranceBoundsAreOrdered) {
   const std::string e = error_of("integrator:\n  cg_tol_max: 0.01\n  cg_tol: 0.05\n");
-  EXPECT_TRUE(starts(e, "c.yaml:3:11: integrator.cg_tol: must not exceed integrator.cg_tol_max")) << e;
+  EXPECT_TRUE(starts(e, "c.yaml:3:11: integrator.cg_tol: need integrator.cg_tol <= "
+                        "integrator.cg_tol_max, got 0.05 > 0.01")) << e;
   const Params p = load_config_text("integrator: {cg_tol: 1e-3, cg_tol_max: 1e-3}\n", "c.yaml");
   EXPECT_EQ(p.integrator.cg_tol_max, 1e-3);  // equal bounds: a fixed tolerance
+  // Only cg_tol_max set, below the default cg_tol: its own line is named.
+  const std::string m = error_of("integrator:\n  cg_tol_max: 0.001\n");
+  EXPECT_TRUE(starts(m, "c.yaml:2:15: integrator.cg_tol_max: need integrator.cg_tol <=")) << m;
+}
+
+// Every relation and open bound that the integrator would otherwise reject later, without a
+// line, is caught where the file sets it.
+TEST(Config, IntegratorRelationsAndOpenBoundsNameTheLine) {
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"integrator:\n  cg_tol: 1\n", "c.yaml:2:11: integrator.cg_tol: must be > 0 and < 1"},
+      {"integrator:\n  cg_tol_max: 1\n", "c.yaml:2:15: integrator.cg_tol_max: must be > 0 and < 1"},
+      {"integrator:\n  plastic_c0: 2\n", "c.yaml:2:15: integrator.plastic_c0: must be >= 0 and < 2"},
+      {"integrator:\n  h_min: 1\n  h_max: 0.5\n",
+       "c.yaml:2:10: integrator.h_min: need integrator.h_min <= integrator.h_max"},
+      {"integrator:\n  h_init: 1e-13\n", "c.yaml:2:11: integrator.h_init: need integrator.h_min <="},
+      {"integrator:\n  h_max: 1e-5\n", "c.yaml:2:10: integrator.h_max: need integrator.h_init <="},
+      {"integrator:\n  h_init: 0.5\n", "c.yaml:2:11: integrator.h_init: need integrator.h_init <="},
+      {"integrator:\n  switch_up: 1e-3\n  switch_down: 1e-3\n",
+       "c.yaml:3:16: integrator.switch_down: need integrator.switch_down < integrator.switch_up"},
+      {"integrator:\n  switch_up: 1e-7\n",
+       "c.yaml:2:14: integrator.switch_up: need integrator.switch_down < integrator.switch_up"},
+  };
+  for (const auto& [yaml, want] : cases) {
+    const std::string e = error_of(yaml);
+    EXPECT_TRUE(starts(e, want)) << yaml << " -> " << e;
+  }
+  EXPECT_TRUE(starts(error_of("", {"integrator.h_init=0.5"}),
+                     "--set integrator.h_init=0.5: integrator.h_init: need"))
+      << error_of("", {"integrator.h_init=0.5"});
+  // The closed ends stay allowed.
+  const Params p = load_config_text("integrator: {plastic_c0: 1.99, h_min: 1e-4, h_init: 1e-4}\n",
+                                    "c.yaml");
+  EXPECT_EQ(p.integrator.plastic_c0, 1.99);
 }
 
 TEST(Config, TwoLevelSolverAndItsPatchSize) {
