@@ -120,8 +120,10 @@ void Integrator::implicit_attempt(const State& s, double h, Attempt& a) {
     return;
   }
 
-  a.err = std::abs(E) * wrms2(it.x - x_pred, it.x, it.p - p_pred, it.p, settings_.atol,
-                              settings_.rtol);
+  // Without plasticity p is a constant, not an unknown: counting its zero errors would dilute
+  // the RMS (by about sqrt(2) on a sheet, as many hinges as coordinates).
+  a.err = std::abs(E) * wrms2(it.x - x_pred, it.x, law_.enabled ? VecX(it.p - p_pred) : VecX(),
+                              it.p, settings_.atol, settings_.rtol);
   // Residual and realised acceleration (switching criterion, §3.4). The force is evaluated at
   // the converged iterate: the Newton object holds the force before the last correction, which
   // after a single iteration is the predictor's residual and would overstate a_max by orders.

@@ -78,6 +78,12 @@ void Integrator::after_accept(const State& s, const Attempt& a, double h, int re
   row.cg_iters = a.cg_iters;
   row.a_ratio = a.a_ratio;
   row.rejections = rejections;
+  // Moving average of a_max / a_ref over the current mode's last switch_window steps (Fig. 6a).
+  auto& w = hist_.a_window;
+  w.push_back(a.a_ratio);
+  if (static_cast<int>(w.size()) > settings_.switch_window) w.erase(w.begin());
+  const double avg = std::accumulate(w.begin(), w.end(), 0.0) / static_cast<double>(w.size());
+  row.a_ratio_avg = avg;
   const Energies en = model_.energies(s);
   row.e_stretch = en.stretch;
   row.e_bend = en.bend;
@@ -86,18 +92,12 @@ void Integrator::after_accept(const State& s, const Attempt& a, double h, int re
   row.e_kinetic = en.kinetic;
   log_.push_back(row);
 
-  // Moving average of a_max / a_ref and the switch (Fig. 6a).
-  auto& w = hist_.a_window;
-  w.push_back(a.a_ratio);
-  if (static_cast<int>(w.size()) > settings_.switch_window) w.erase(w.begin());
-  const double avg = std::accumulate(w.begin(), w.end(), 0.0) / static_cast<double>(w.size());
   if (hist_.steps_in_mode < settings_.switch_min_steps) return;
   if (implicit && avg > settings_.switch_up) {
     hist_.mode = IntegrationMode::Explicit;
     // Start the explicit steps well inside RK4's stability region for the in-plane springs
     // (period 2 pi sqrt(m / ks)); the controller takes over from there.
-    const double t_spring = std::sqrt(model_.params().mass / model_.params().ks);
-    hist_.h = std::min(hist_.h, 0.2 * t_spring);
+    hist_.h = std::min(hist_.h, explicit_start_step());
   } else if (!implicit && avg < settings_.switch_down) {
     hist_.mode = IntegrationMode::Implicit;
   } else {
@@ -105,6 +105,7 @@ void Integrator::after_accept(const State& s, const Attempt& a, double h, int re
   }
   ++C.switches;
   hist_.steps_in_mode = 0;
+  hist_.a_window.clear();  // the new mode's average starts afresh
   reset_history(s);  // the BDF order climbs again from 1; the FSAL stage is dropped
 }
 
@@ -214,14 +215,14 @@ void Integrator::advance_to(State& s, double t_end) {
       // A quasistatic step that fails (not SPD, Newton) even below the explicit step size
       // cannot be rescued by shrinking h further (the indefinite part of Hv does not vanish
       // as h -> 0 when springs are strongly compressed): hand over to the explicit mode, which
-      // needs no SPD matrix.
-      const double t_spring = std::sqrt(model_.params().mass / model_.params().ks);
-      if (implicit && !a.ok && hn < 0.2 * t_spring) {
+      // needs no SPD matrix, whatever switch_min_steps says.
+      if (implicit && !a.ok && hn < explicit_start_step()) {
         hist_.mode = IntegrationMode::Explicit;
         hist_.steps_in_mode = 0;
+        hist_.a_window.clear();
         ++C.switches;
         reset_history(s);
-        hist_.h = std::min(h, 0.2 * t_spring);
+        hist_.h = std::min(h, explicit_start_step());
         continue;
       }
       if (h <= settings_.h_min * (1 + 1e-12) || hn < settings_.h_min) {

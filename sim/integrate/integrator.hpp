@@ -16,8 +16,11 @@
 // switch_window accepted steps above switch_up switches to dynamic, below switch_down back to
 // quasistatic, each only after switch_min_steps steps in the current mode.
 // Failures (matrix not SPD, Newton not converging, non-finite values) reject the step and retry
-// with h / 4; an error-test failure shrinks h by the controller. Below h_min a NumericalFailure
-// is thrown with the time, h, the reason and the node with the largest residual force.
+// with h / 4; an error-test failure shrinks h by the controller. A quasistatic step that fails
+// where h / 4 would be shorter than the first explicit step (explicit_h_start sqrt(m / ks)) is
+// retried in the dynamic mode instead, which needs no SPD matrix (a switch that does not wait
+// for switch_min_steps). Below h_min a NumericalFailure is thrown with the time, h, the reason
+// and the node with the largest residual force.
 #pragma once
 
 #include "sim/integrate/linear_solver.hpp"
@@ -27,6 +30,7 @@
 #include "sim/integrate/step_log.hpp"
 #include "sim/model/sheet_model.hpp"
 
+#include <cmath>
 #include <functional>
 #include <memory>
 
@@ -96,6 +100,10 @@ class Integrator {
   /// The same from the hinge curvatures c of that state.
   double plastic_rate_from(const VecX& c, const VecX& p, VecX& g) const;
   void after_accept(const State& s, const Attempt& a, double h, int rejections);
+  /// explicit_h_start sqrt(m / ks): the first explicit step after a switch.
+  double explicit_start_step() const {
+    return settings_.explicit_h_start * std::sqrt(model_.params().mass / model_.params().ks);
+  }
 
   SheetModel& model_;
   IntegratorSettings settings_;

@@ -49,6 +49,7 @@ void validate(const IntegratorSettings& s) {
   require(s.cg_tol <= s.cg_tol_max && s.cg_tol_max < 1, "need cg_tol <= cg_tol_max < 1");
   require(s.switch_down < s.switch_up, "switch_down must be below switch_up");
   require(s.switch_window >= 1 && s.switch_min_steps >= 0, "switch_window >= 1");
+  require(s.explicit_h_start > 0, "explicit_h_start must be > 0");
   require(s.plastic_c0 >= 0 && s.plastic_c0 < 2, "plastic_c0 must be in [0, 2)");
   require(s.plastic_gamma >= 0 && s.plastic_rate >= 0, "plastic_gamma, plastic_rate >= 0");
 }

@@ -47,6 +47,10 @@ struct IntegratorSettings {
   int switch_window = 10;    ///< accepted steps in the moving average
   int switch_min_steps = 20; ///< accepted steps in a mode before it may switch again
   double explicit_rtol = 1e-6;  ///< RK4(3) relative tolerance
+  /// Largest first explicit step after a switch, in units of the in-plane spring time
+  /// sqrt(m / ks). A quasistatic step that fails (not SPD, Newton) where its retry would be
+  /// shorter than this is handed over to the explicit mode at once (integrator.hpp).
+  double explicit_h_start = 0.2;
   bool plasticity = true;
   double plastic_c0 = 0.1;      ///< yield curvature (19)
   double plastic_gamma = 0.0;   ///< damage-rate constant (19)

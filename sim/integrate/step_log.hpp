@@ -14,6 +14,7 @@ struct LogRow {
   int newton_iters = 0;  ///< Newton iterations of the accepted attempt
   int cg_iters = 0;      ///< CG iterations summed over those Newton iterations
   double a_ratio = 0;    ///< a_max / a_ref of the step (before averaging)
+  double a_ratio_avg = 0;  ///< its moving average that the switch tests (Fig. 6a)
   int rejections = 0;    ///< rejected attempts before this step was accepted
   double e_stretch = 0, e_bend = 0, e_contact = 0, e_external = 0, e_kinetic = 0;
 };

@@ -209,7 +209,7 @@ Params parse(YAML::Node root, Context& ctx) {
               "max_growth", "newton_tol", "newton_max_iters", "newton_target", "linear_solver",
               "block_size", "coarse_nodes", "cg_tol", "cg_tol_max", "cg_max_iters", "switch_up",
               "switch_down", "switch_window", "switch_min_steps", "explicit_rtol",
-              "plasticity", "plastic_c0", "plastic_gamma", "plastic_rate"});
+              "explicit_h_start", "plasticity", "plastic_c0", "plastic_gamma", "plastic_rate"});
   auto& s = p.integrator;
   std::string mode = s.mode_initial == IntegrationMode::Implicit ? "implicit" : "explicit";
   in.text("mode_initial", mode, {"implicit", "explicit"});
@@ -237,6 +237,7 @@ Params parse(YAML::Node root, Context& ctx) {
   in.integer("switch_window", s.switch_window, 1, 1e6);
   in.integer("switch_min_steps", s.switch_min_steps, 0, 1e9);
   in.number("explicit_rtol", s.explicit_rtol, 0, kInf, true);
+  in.number("explicit_h_start", s.explicit_h_start, 0, kInf, true);
   in.flag("plasticity", s.plasticity);
   in.number("plastic_c0", s.plastic_c0, 0, 2, false, true);  // f divides by 2 - c0 (eq. 19)
   in.number("plastic_gamma", s.plastic_gamma, 0, kInf);
@@ -380,6 +381,7 @@ std::string resolved_yaml(const Params& p) {
   e << YAML::Key << "switch_window" << YAML::Value << s.switch_window;
   e << YAML::Key << "switch_min_steps" << YAML::Value << s.switch_min_steps;
   e << YAML::Key << "explicit_rtol" << YAML::Value << s.explicit_rtol;
+  e << YAML::Key << "explicit_h_start" << YAML::Value << s.explicit_h_start;
   e << YAML::Key << "plasticity" << YAML::Value << s.plasticity;
   e << YAML::Key << "plastic_c0" << YAML::Value << s.plastic_c0;
   e << YAML::Key << "plastic_gamma" << YAML::Value << s.plastic_gamma;

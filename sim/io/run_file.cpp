@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace crumple {
@@ -174,6 +175,7 @@ void write_run_file(const std::string& path, const RunRecord& r) {
   h5::write(log, "t", log_column(r.log, [](const LogRow& x) { return x.t; }));
   h5::write(log, "h", log_column(r.log, [](const LogRow& x) { return x.h; }));
   h5::write(log, "a_ratio", log_column(r.log, [](const LogRow& x) { return x.a_ratio; }));
+  h5::write(log, "a_ratio_avg", log_column(r.log, [](const LogRow& x) { return x.a_ratio_avg; }));
   std::vector<std::int8_t> mode;
   std::vector<std::int32_t> newton, cg, rej, order;
   for (const auto& x : r.log) {
@@ -245,12 +247,17 @@ RunRecord read_run_file(const std::string& path) {
                a = h5::read_doubles(log, "a_ratio"), es = h5::read_doubles(log, "e_stretch"),
                eb = h5::read_doubles(log, "e_bend"), ec = h5::read_doubles(log, "e_contact"),
                ee = h5::read_doubles(log, "e_external"), ek = h5::read_doubles(log, "e_kinetic");
+    // Files written before the average was logged have no column: NaN rows.
+    const auto avg = h5::exists(log, "a_ratio_avg")
+                         ? h5::read_doubles(log, "a_ratio_avg")
+                         : std::vector<double>(t.size(), std::numeric_limits<double>::quiet_NaN());
     const auto mode = h5::read_int8(log, "mode");
     const auto order = h5::read_ints(log, "order"), newton = h5::read_ints(log, "newton_iters"),
                cg = h5::read_ints(log, "cg_iters"), rej = h5::read_ints(log, "rejections");
     for (std::size_t k = 0; k < t.size(); ++k) {
       LogRow row;
-      row.t = t[k], row.h = hh[k], row.a_ratio = a[k], row.mode = mode[k], row.order = order[k];
+      row.t = t[k], row.h = hh[k], row.a_ratio = a[k], row.a_ratio_avg = avg.at(k);
+      row.mode = mode[k], row.order = order[k];
       row.newton_iters = newton[k], row.cg_iters = cg[k], row.rejections = rej[k];
       row.e_stretch = es[k], row.e_bend = eb[k], row.e_contact = ec[k], row.e_external = ee[k];
       row.e_kinetic = ek[k];

@@ -361,31 +361,66 @@ TEST(Integrator, ReleasedSheetSwitchesImplicitExplicitImplicit) {
   EXPECT_EQ(modes[0], 0);
   EXPECT_EQ(modes[1], 1);
   EXPECT_EQ(modes[2], 0);
+  // The logged moving average is what the switch tested: over switch_up on the last
+  // quasistatic step, below switch_down on the last explicit one, and the mean of the mode's
+  // last switch_window raw values.
+  const auto& log = integ.log();
+  const auto& st = integ.settings();
+  for (std::size_t k = 1; k < log.size(); ++k) {
+    if (log[k].mode == log[k - 1].mode) continue;
+    const double avg = log[k - 1].a_ratio_avg;
+    if (log[k - 1].mode == 0) EXPECT_GT(avg, st.switch_up) << "step " << k - 1;
+    else EXPECT_LT(avg, st.switch_down) << "step " << k - 1;
+    double mean = 0;
+    for (std::size_t j = k - st.switch_window; j < k; ++j) mean += log[j].a_ratio;
+    EXPECT_NEAR(avg, mean / st.switch_window, 1e-12 * std::abs(avg)) << "step " << k - 1;
+  }
   EXPECT_LT(model.energies(s).potential(), 1e-6);
 }
 
-TEST(Integrator, NonSpdMatrixRejectsAndRetriesWithSmallerStep) {
-  SheetModel model(sheet(), params(1.0));
-  // A concave anchor on one node: for large h the Newton matrix Hx + b/(beta h) is indefinite.
-  State s = model.rest_state();
-  VecX target = s.x.segment<3>(0) - Vec3(0.01, 0.01, 0.0);
+namespace {
+
+// A concave anchor on node 0: for large h the Newton matrix Hx + b/(beta h) is indefinite.
+void add_concave_anchor(SheetModel& model) {
+  const VecX target = model.rest_state().x.segment<3>(0) - Vec3(0.01, 0.01, 0.0);
   model.add_term(std::make_shared<AnchorTerm>(std::vector<Index>{0}, target, -50.0),
                  TermKind::External);
+}
+
+// Quasistatic throughout, first step as long as allowed: the anchor's matrix is indefinite.
+IntegratorSettings long_quasistatic_steps() {
   auto st = no_switching(IntegrationMode::Implicit);
   st.h_init = 1.0;
   st.h_max = 1.0;
+  return st;
+}
+
+}  // namespace
+
+TEST(Integrator, NonSpdMatrixRejectsAndRetriesWithSmallerStep) {
+  SheetModel model(sheet(), params(1.0));
+  add_concave_anchor(model);
+  State s = model.rest_state();
+  auto st = long_quasistatic_steps();
+  // Retries stay quasistatic down to a far shorter step than the default hand-over allows
+  // (the next test covers that).
+  st.explicit_h_start = 1e-4;
   Integrator integ(model, st);
   integ.advance_to(s, 0.05);
   const auto sum = integ.summary();
-  std::printf("not SPD: %ld rejections (%ld not SPD)\n", sum.rejections(), sum.rejected_not_spd);
+  std::printf("not SPD: %ld rejections (%ld not SPD), first step h = %g in mode %d\n",
+              sum.rejections(), sum.rejected_not_spd, integ.log().front().h,
+              integ.log().front().mode);
   EXPECT_GE(sum.rejected_not_spd, 1);
   EXPECT_DOUBLE_EQ(s.t, 0.05);
   EXPECT_GE(integ.log().front().rejections, 1);
+  EXPECT_EQ(integ.log().front().mode, 0);  // retried quasistatic, with a quarter of h each time
+  EXPECT_LE(integ.log().front().h, 0.05 / 4);
+  EXPECT_EQ(sum.switches, 0);
 
   // The same with h_min above the SPD limit cannot recover: NumericalFailure names the reason.
   SheetModel model2(sheet(), params(1.0));
-  model2.add_term(std::make_shared<AnchorTerm>(std::vector<Index>{0}, target, -50.0),
-                  TermKind::External);
+  add_concave_anchor(model2);
   st.h_min = 0.3;
   st.h_init = 1.0;
   Integrator integ2(model2, st);
@@ -398,6 +433,32 @@ TEST(Integrator, NonSpdMatrixRejectsAndRetriesWithSmallerStep) {
     EXPECT_NE(msg.find("not SPD"), std::string::npos) << msg;
     EXPECT_NE(msg.find("t = 0"), std::string::npos) << msg;
   }
+}
+
+TEST(Integrator, FailingQuasistaticStepBelowTheExplicitStepIsHandedOver) {
+  // The same indefinite anchor with the default explicit_h_start: once the retry would be
+  // shorter than the first explicit step, the step is retried in the dynamic mode at once,
+  // although switch_min_steps forbids switching on a_max / a_ref.
+  SheetModel model(sheet(), params(1.0));
+  add_concave_anchor(model);
+  State s = model.rest_state();
+  auto st = long_quasistatic_steps();
+  Integrator integ(model, st);
+  const double h_start = st.explicit_h_start * std::sqrt(model.params().mass / model.params().ks);
+  // The first attempt is the whole interval (h_init lands on 0.05) and is not SPD; the
+  // hand-over needs its quarter to be shorter than the first explicit step.
+  ASSERT_GT(h_start, 0.05 / 4);
+  integ.advance_to(s, 0.05);
+  const auto sum = integ.summary();
+  std::printf("hand-over: first step h = %g in mode %d after %d rejections; h_start %g\n",
+              integ.log().front().h, integ.log().front().mode, integ.log().front().rejections,
+              h_start);
+  EXPECT_GE(sum.rejected_not_spd, 1);
+  EXPECT_EQ(integ.log().front().mode, 1);
+  EXPECT_LE(integ.log().front().h, h_start * (1 + 1e-12));
+  EXPECT_EQ(sum.switches, 1);
+  EXPECT_EQ(integ.mode(), IntegrationMode::Explicit);
+  EXPECT_DOUBLE_EQ(s.t, 0.05);
 }
 
 TEST(Integrator, ResumeFromHistoryIsBitForBit) {

@@ -30,6 +30,7 @@ TEST(RunFile, RoundTripIsExact) {
   r.cycles.push_back(c);
   LogRow row;
   row.t = 0.3, row.h = 1e-3, row.mode = 1, row.newton_iters = 2, row.cg_iters = 40, row.e_bend = 7;
+  row.order = 3, row.a_ratio = 2e-3, row.a_ratio_avg = 1.5e-3;
   r.log = {row, row};
   Checkpoint ck;
   ck.cycle = 2, ck.stage = 1, ck.in_stage = true, ck.stage_t_begin = 1.25;
@@ -63,6 +64,9 @@ TEST(RunFile, RoundTripIsExact) {
   ASSERT_EQ(q.log.size(), 2u);
   EXPECT_EQ(q.log[1].cg_iters, 40);
   EXPECT_EQ(q.log[1].e_bend, 7);
+  EXPECT_EQ(q.log[1].order, 3);
+  EXPECT_EQ(q.log[1].a_ratio, 2e-3);
+  EXPECT_EQ(q.log[1].a_ratio_avg, 1.5e-3);
   ASSERT_TRUE(q.checkpoint.has_value());
   EXPECT_EQ(q.checkpoint->stage_begin.x, ck.stage_begin.x);
   EXPECT_EQ(q.checkpoint->stepper, ck.stepper);
