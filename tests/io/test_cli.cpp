@@ -1,9 +1,11 @@
 // The crumple-sim binary: bad input exits 2 with the message and writes nothing; a run killed
-// with SIGKILL and resumed gives the uninterrupted result; no final file exists before the end.
+// with SIGKILL and resumed gives the uninterrupted result, step log included; no final file
+// exists before the end.
 #include "sim/io/run_file.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -114,4 +116,21 @@ TEST(Cli, KilledRunResumesToTheUninterruptedResult) {
   EXPECT_EQ(a.checkpoint->state.p, b.checkpoint->state.p);
   EXPECT_EQ(a.frames.size(), b.frames.size());
   EXPECT_EQ(b.meta.status, "complete");
+  // The step log: one row per accepted step up to the end, the same rows with and without the
+  // interruption.
+  ASSERT_FALSE(a.log.empty());
+  EXPECT_EQ(a.log.back().t, a.checkpoint->state.t);
+  ASSERT_EQ(a.log.size(), b.log.size());
+  for (std::size_t k = 0; k < a.log.size(); ++k) {
+    const LogRow &x = a.log[k], &y = b.log[k];
+    ASSERT_TRUE(x.t == y.t && x.h == y.h && x.mode == y.mode && x.order == y.order &&
+                x.newton_iters == y.newton_iters && x.a_ratio_avg == y.a_ratio_avg &&
+                x.e_bend == y.e_bend)
+        << "log row " << k << ": t " << x.t << " / " << y.t << ", h " << x.h << " / " << y.h;
+    if (k > 0) {
+      EXPECT_GT(x.t, a.log[k - 1].t) << "log row " << k;
+    }
+    EXPECT_TRUE(x.mode == 0 || x.mode == 1) << "log row " << k;
+    EXPECT_TRUE(std::isfinite(x.a_ratio_avg) && x.a_ratio_avg >= 0) << "log row " << k;
+  }
 }
