@@ -225,7 +225,8 @@ void Integrator::advance_to(State& s, double t_end) {
         hist_.h = std::min(h, explicit_start_step());
         continue;
       }
-      if (h <= settings_.h_min * (1 + 1e-12) || hn < settings_.h_min) {
+      // A retry below h_min is made at h_min once; a step at h_min that fails ends the run.
+      if (h <= settings_.h_min * (1 + 1e-12)) {
         std::ostringstream msg;
         msg << "integration failed at t = " << s.t << " with h = " << h << " (h_min "
             << settings_.h_min << ", " << (implicit ? "implicit" : "explicit")
@@ -233,7 +234,7 @@ void Integrator::advance_to(State& s, double t_end) {
         hist_.counters.wall_total += omp_get_wtime() - wall0;
         throw NumericalFailure(msg.str());
       }
-      hist_.h = hn;
+      hist_.h = std::max(hn, settings_.h_min);
     }
     s = std::move(a.next);
     if (hist_.mode == IntegrationMode::Explicit) hist_.fsal = std::move(a.fsal);

@@ -19,8 +19,8 @@
 // with h / 4; an error-test failure shrinks h by the controller. A quasistatic step that fails
 // where h / 4 would be shorter than the first explicit step (explicit_h_start sqrt(m / ks)) is
 // retried in the dynamic mode instead, which needs no SPD matrix (a switch that does not wait
-// for switch_min_steps). Below h_min a NumericalFailure is thrown with the time, h, the reason
-// and the node with the largest residual force.
+// for switch_min_steps). A retry below h_min is made at h_min; a step failing there throws a
+// NumericalFailure with the time, h, the reason and the node with the largest residual force.
 #pragma once
 
 #include "sim/integrate/linear_solver.hpp"

@@ -432,6 +432,8 @@ TEST(Integrator, NonSpdMatrixRejectsAndRetriesWithSmallerStep) {
     const std::string msg = e.what();
     EXPECT_NE(msg.find("not SPD"), std::string::npos) << msg;
     EXPECT_NE(msg.find("t = 0"), std::string::npos) << msg;
+    // h / 4 = 0.25 fell below h_min: the last attempt was at h_min itself.
+    EXPECT_NE(msg.find("with h = 0.3 "), std::string::npos) << msg;
   }
 }
 
