@@ -34,6 +34,7 @@ class FileSink : public RunSink {
   void flush_log() {
     rec_.log.insert(rec_.log.end(), integ_.log().begin(), integ_.log().end());
     integ_.clear_log();
+    rec_.summary = integ_.summary();  // cumulative: a resumed integrator restores its counters
   }
 
  private:

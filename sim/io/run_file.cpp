@@ -122,6 +122,49 @@ Checkpoint read_checkpoint(const H5::Group& root) {
   return c;
 }
 
+// The integrator's counters as attributes of /log, one name per field.
+struct SummaryField {
+  const char* name;
+  long IntegratorSummary::*count;
+  double IntegratorSummary::*seconds;
+};
+constexpr SummaryField kSummaryFields[] = {
+    {"steps_implicit", &IntegratorSummary::steps_implicit, nullptr},
+    {"steps_explicit", &IntegratorSummary::steps_explicit, nullptr},
+    {"switches", &IntegratorSummary::switches, nullptr},
+    {"implicit_attempts", &IntegratorSummary::implicit_attempts, nullptr},
+    {"newton_iters", &IntegratorSummary::newton_iters, nullptr},
+    {"cg_iters", &IntegratorSummary::cg_iters, nullptr},
+    {"rejected_error", &IntegratorSummary::rejected_error, nullptr},
+    {"rejected_newton", &IntegratorSummary::rejected_newton, nullptr},
+    {"rejected_not_spd", &IntegratorSummary::rejected_not_spd, nullptr},
+    {"rejected_other", &IntegratorSummary::rejected_other, nullptr},
+    {"wall_total", nullptr, &IntegratorSummary::wall_total},
+    {"wall_implicit", nullptr, &IntegratorSummary::wall_implicit},
+    {"wall_explicit", nullptr, &IntegratorSummary::wall_explicit},
+    {"wall_linear", nullptr, &IntegratorSummary::wall_linear},
+    {"wall_assembly", nullptr, &IntegratorSummary::wall_assembly},
+    {"wall_before_step", nullptr, &IntegratorSummary::wall_before_step},
+};
+
+void write_summary(H5::Group& log, const IntegratorSummary& s) {
+  for (const SummaryField& f : kSummaryFields) {
+    if (f.count) h5::attr(log, f.name, std::int64_t{s.*f.count});
+    else h5::attr(log, f.name, s.*f.seconds);
+  }
+  h5::attr(log, "summary", s.text());
+}
+
+std::optional<IntegratorSummary> read_summary(const H5::Group& log) {
+  if (!log.attrExists(kSummaryFields[0].name)) return std::nullopt;
+  IntegratorSummary s;
+  for (const SummaryField& f : kSummaryFields) {
+    if (f.count) s.*f.count = static_cast<long>(h5::attr_int(log, f.name));
+    else s.*f.seconds = h5::attr_double(log, f.name);
+  }
+  return s;
+}
+
 template <class F>
 std::vector<double> log_column(const std::vector<LogRow>& log, F f) {
   std::vector<double> v;
@@ -195,6 +238,7 @@ void write_run_file(const std::string& path, const RunRecord& r) {
   h5::write(log, "e_contact", log_column(r.log, [](const LogRow& x) { return x.e_contact; }));
   h5::write(log, "e_external", log_column(r.log, [](const LogRow& x) { return x.e_external; }));
   h5::write(log, "e_kinetic", log_column(r.log, [](const LogRow& x) { return x.e_kinetic; }));
+  if (r.summary) write_summary(log, *r.summary);
   if (r.checkpoint) write_checkpoint(root, *r.checkpoint);
 }
 
@@ -263,6 +307,7 @@ RunRecord read_run_file(const std::string& path) {
       row.e_kinetic = ek[k];
       r.log.push_back(row);
     }
+    r.summary = read_summary(log);
     if (h5::exists(root, "checkpoint")) r.checkpoint = read_checkpoint(root);
     return r;
   } catch (const H5::Exception& e) {

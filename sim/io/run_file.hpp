@@ -41,6 +41,9 @@ struct RunRecord {
   std::vector<FrameRecord> frames;
   std::vector<CycleRecord> cycles;
   std::vector<LogRow> log;
+  /// The integrator's counters over the whole run (attributes of /log); absent in files
+  /// written before they were stored.
+  std::optional<IntegratorSummary> summary;
   std::optional<Checkpoint> checkpoint;
 };
 

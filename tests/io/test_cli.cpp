@@ -121,6 +121,13 @@ TEST(Cli, KilledRunResumesToTheUninterruptedResult) {
   ASSERT_FALSE(a.log.empty());
   EXPECT_EQ(a.log.back().t, a.checkpoint->state.t);
   ASSERT_EQ(a.log.size(), b.log.size());
+  // The run summary covers the whole run, across the interruption too (wall times aside).
+  ASSERT_TRUE(a.summary && b.summary);
+  EXPECT_EQ(a.summary->steps(), static_cast<long>(a.log.size()));
+  EXPECT_EQ(b.summary->steps(), a.summary->steps());
+  EXPECT_EQ(b.summary->newton_iters, a.summary->newton_iters);
+  EXPECT_EQ(b.summary->cg_iters, a.summary->cg_iters);
+  EXPECT_EQ(b.summary->rejections(), a.summary->rejections());
   for (std::size_t k = 0; k < a.log.size(); ++k) {
     const LogRow &x = a.log[k], &y = b.log[k];
     ASSERT_TRUE(x.t == y.t && x.h == y.h && x.mode == y.mode && x.order == y.order &&

@@ -32,6 +32,9 @@ TEST(RunFile, RoundTripIsExact) {
   row.t = 0.3, row.h = 1e-3, row.mode = 1, row.newton_iters = 2, row.cg_iters = 40, row.e_bend = 7;
   row.order = 3, row.a_ratio = 2e-3, row.a_ratio_avg = 1.5e-3;
   r.log = {row, row};
+  IntegratorSummary sum;
+  sum.steps_implicit = 5, sum.steps_explicit = 7, sum.cg_iters = 123456789012, sum.wall_linear = 0.25;
+  r.summary = sum;
   Checkpoint ck;
   ck.cycle = 2, ck.stage = 1, ck.in_stage = true, ck.stage_t_begin = 1.25;
   ck.state = r.frames[1].state;
@@ -67,6 +70,11 @@ TEST(RunFile, RoundTripIsExact) {
   EXPECT_EQ(q.log[1].order, 3);
   EXPECT_EQ(q.log[1].a_ratio, 2e-3);
   EXPECT_EQ(q.log[1].a_ratio_avg, 1.5e-3);
+  ASSERT_TRUE(q.summary.has_value());
+  EXPECT_EQ(q.summary->steps_implicit, 5);
+  EXPECT_EQ(q.summary->steps_explicit, 7);
+  EXPECT_EQ(q.summary->cg_iters, 123456789012);
+  EXPECT_EQ(q.summary->wall_linear, 0.25);
   ASSERT_TRUE(q.checkpoint.has_value());
   EXPECT_EQ(q.checkpoint->stage_begin.x, ck.stage_begin.x);
   EXPECT_EQ(q.checkpoint->stepper, ck.stepper);
