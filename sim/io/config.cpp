@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -242,17 +243,20 @@ Params parse(YAML::Node root, Context& ctx) {
   in.number("plastic_c0", s.plastic_c0, 0, 2, false, true);  // f divides by 2 - c0 (eq. 19)
   in.number("plastic_gamma", s.plastic_gamma, 0, kInf);
   in.number("plastic_rate", s.plastic_rate, 0, kInf, true);
-  // Relations between keys: the error names the first of the pair that the file sets (its line),
-  // else the other, else the top of the file (both defaults, which cannot happen).
+  // Relations between keys: the error names a key of the pair that a --set override gave, else
+  // the first of the pair that the file sets (its line), else the other (the defaults satisfy
+  // every relation, so one of the two is always set when it fails).
   const auto relation = [&](bool ok, const char* a, const char* b, const std::string& what) {
     if (ok) return;
-    const YAML::Node na = in.get(a), nb = in.get(b);
-    const char* key = na ? a : (nb ? b : a);
-    ctx.fail(na ? na : (nb ? nb : root), in.dotted(key), what);
+    const auto given = [&](const char* k) { return bool(in.get(k)); };
+    const auto by_set = [&](const char* k) { return ctx.overrides.count(in.dotted(k)) > 0; };
+    const char* key = by_set(a) ? a : by_set(b) ? b : given(a) ? a : given(b) ? b : a;
+    const YAML::Node n = in.get(key);
+    ctx.fail(n ? n : root, in.dotted(key), what);
   };
-  const auto num = [](double v) {
+  const auto num = [](double v) {  // enough digits that two values in a message differ
     std::ostringstream os;
-    os << v;
+    os << std::setprecision(10) << v;
     return os.str();
   };
   relation(s.h_min <= s.h_max, "h_min", "h_max",

@@ -298,9 +298,15 @@ RunRecord read_run_file(const std::string& path) {
     const auto mode = h5::read_int8(log, "mode");
     const auto order = h5::read_ints(log, "order"), newton = h5::read_ints(log, "newton_iters"),
                cg = h5::read_ints(log, "cg_iters"), rej = h5::read_ints(log, "rejections");
+    for (const std::size_t n : {hh.size(), a.size(), es.size(), eb.size(), ec.size(), ee.size(),
+                                ek.size(), avg.size(), mode.size(), order.size(), newton.size(),
+                                cg.size(), rej.size()})
+      if (n != t.size())
+        throw InputError(path + ": /log columns of unequal length (" + std::to_string(n) +
+                         " rows against " + std::to_string(t.size()) + " times)");
     for (std::size_t k = 0; k < t.size(); ++k) {
       LogRow row;
-      row.t = t[k], row.h = hh[k], row.a_ratio = a[k], row.a_ratio_avg = avg.at(k);
+      row.t = t[k], row.h = hh[k], row.a_ratio = a[k], row.a_ratio_avg = avg[k];
       row.mode = mode[k], row.order = order[k];
       row.newton_iters = newton[k], row.cg_iters = cg[k], row.rejections = rej[k];
       row.e_stretch = es[k], row.e_bend = eb[k], row.e_contact = ec[k], row.e_external = ee[k];

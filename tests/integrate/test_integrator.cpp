@@ -374,6 +374,8 @@ TEST(Integrator, ReleasedSheetSwitchesImplicitExplicitImplicit) {
     double mean = 0;
     for (std::size_t j = k - st.switch_window; j < k; ++j) mean += log[j].a_ratio;
     EXPECT_NEAR(avg, mean / st.switch_window, 1e-12 * std::abs(avg)) << "step " << k - 1;
+    // The new mode's average starts afresh: its first row averages that row alone.
+    EXPECT_EQ(log[k].a_ratio_avg, log[k].a_ratio) << "step " << k;
   }
   EXPECT_LT(model.energies(s).potential(), 1e-6);
 }

@@ -131,8 +131,11 @@ TEST(Cli, KilledRunResumesToTheUninterruptedResult) {
   for (std::size_t k = 0; k < a.log.size(); ++k) {
     const LogRow &x = a.log[k], &y = b.log[k];
     ASSERT_TRUE(x.t == y.t && x.h == y.h && x.mode == y.mode && x.order == y.order &&
-                x.newton_iters == y.newton_iters && x.a_ratio_avg == y.a_ratio_avg &&
-                x.e_bend == y.e_bend)
+                x.newton_iters == y.newton_iters && x.cg_iters == y.cg_iters &&
+                x.rejections == y.rejections && x.a_ratio == y.a_ratio &&
+                x.a_ratio_avg == y.a_ratio_avg && x.e_stretch == y.e_stretch &&
+                x.e_bend == y.e_bend && x.e_contact == y.e_contact &&
+                x.e_external == y.e_external && x.e_kinetic == y.e_kinetic)
         << "log row " << k << ": t " << x.t << " / " << y.t << ", h " << x.h << " / " << y.h;
     if (k > 0) {
       EXPECT_GT(x.t, a.log[k - 1].t) << "log row " << k;

@@ -92,8 +92,10 @@ TEST(Config, CgToleranceBoundsAreOrdered) {
 TEST(Config, IntegratorRelationsAndOpenBoundsNameTheLine) {
   const std::vector<std::pair<std::string, std::string>> cases{
       {"integrator:\n  cg_tol: 1\n", "c.yaml:2:11: integrator.cg_tol: must be > 0 and < 1"},
-      {"integrator:\n  cg_tol_max: 1\n", "c.yaml:2:15: integrator.cg_tol_max: must be > 0 and < 1"},
-      {"integrator:\n  plastic_c0: 2\n", "c.yaml:2:15: integrator.plastic_c0: must be >= 0 and < 2"},
+      {"integrator:\n  cg_tol_max: 1\n",
+       "c.yaml:2:15: integrator.cg_tol_max: must be > 0 and < 1"},
+      {"integrator:\n  plastic_c0: 2\n",
+       "c.yaml:2:15: integrator.plastic_c0: must be >= 0 and < 2"},
       {"integrator:\n  h_min: 1\n  h_max: 0.5\n",
        "c.yaml:2:10: integrator.h_min: need integrator.h_min <= integrator.h_max"},
       {"integrator:\n  h_init: 1e-13\n", "c.yaml:2:11: integrator.h_init: need integrator.h_min <="},
@@ -111,6 +113,13 @@ TEST(Config, IntegratorRelationsAndOpenBoundsNameTheLine) {
   EXPECT_TRUE(starts(error_of("", {"integrator.h_init=0.5"}),
                      "--set integrator.h_init=0.5: integrator.h_init: need"))
       << error_of("", {"integrator.h_init=0.5"});
+  // The file sets one key of the pair, --set the other that breaks the relation: the --set.
+  const std::string both = error_of("integrator:\n  h_init: 1e-4\n", {"integrator.h_max=1e-5"});
+  EXPECT_TRUE(starts(both, "--set integrator.h_max=1e-5: integrator.h_max: need integrator.h_init "
+                           "<= integrator.h_max, got 0.0001 > 1e-05")) << both;
+  // Values close together are printed with enough digits to differ.
+  const std::string close = error_of("integrator:\n  h_init: 1.0000001e-4\n  h_max: 1e-4\n");
+  EXPECT_NE(close.find("got 0.00010000001 > 0.0001"), std::string::npos) << close;
   // The closed ends stay allowed.
   const Params p = load_config_text("integrator: {plastic_c0: 1.99, h_min: 1e-4, h_init: 1e-4}\n",
                                     "c.yaml");

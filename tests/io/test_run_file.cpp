@@ -1,9 +1,13 @@
-// The run file: an exact HDF5 round trip of mesh, frames, cycles, log, meta and checkpoint.
+// The run file: an exact HDF5 round trip of mesh, frames, cycles, log, meta and checkpoint;
+// older files without the logged average; bad files.
+#include "sim/core/errors.hpp"
+#include "sim/io/h5.hpp"
 #include "sim/io/run_file.hpp"
 #include "tests/support/grid_mesh.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <random>
 
@@ -33,7 +37,8 @@ TEST(RunFile, RoundTripIsExact) {
   row.order = 3, row.a_ratio = 2e-3, row.a_ratio_avg = 1.5e-3;
   r.log = {row, row};
   IntegratorSummary sum;
-  sum.steps_implicit = 5, sum.steps_explicit = 7, sum.cg_iters = 123456789012, sum.wall_linear = 0.25;
+  sum.steps_implicit = 5, sum.steps_explicit = 7, sum.cg_iters = 123456789012;
+  sum.wall_linear = 0.25;
   r.summary = sum;
   Checkpoint ck;
   ck.cycle = 2, ck.stage = 1, ck.in_stage = true, ck.stage_t_begin = 1.25;
@@ -80,6 +85,41 @@ TEST(RunFile, RoundTripIsExact) {
   EXPECT_EQ(q.checkpoint->stepper, ck.stepper);
   EXPECT_EQ(q.checkpoint->apparatus.radius, 0.0177);
   EXPECT_EQ(q.checkpoint->rng_at_stage_begin, "1 2 3");
+}
+
+// A file written before the moving average was logged reads with NaN in its place; a column
+// of the wrong length is bad input that names the file.
+TEST(RunFile, OlderLogWithoutTheAverageAndUnequalColumns) {
+  RunRecord r;
+  r.mesh = crumple::testing::grid_mesh(3, 3, 0.1, 0.1, 0.0, 1);
+  LogRow row;
+  row.t = 0.5, row.a_ratio = 1e-4, row.a_ratio_avg = 2e-4;
+  r.log = {row, row, row};
+  const std::string path = (std::filesystem::temp_directory_path() / "crumple_oldlog.h5").string();
+  write_run_file(path, r);
+  {
+    H5::H5File f(path, H5F_ACC_RDWR);
+    H5::Group log = f.openGroup("log");
+    ASSERT_GE(H5Ldelete(log.getId(), "a_ratio_avg", H5P_DEFAULT), 0);
+  }
+  const RunRecord q = read_run_file(path);
+  ASSERT_EQ(q.log.size(), 3u);
+  EXPECT_TRUE(std::isnan(q.log[2].a_ratio_avg));
+  EXPECT_EQ(q.log[2].a_ratio, 1e-4);
+  EXPECT_FALSE(q.summary.has_value());
+  {
+    H5::H5File f(path, H5F_ACC_RDWR);
+    H5::Group log = f.openGroup("log");
+    h5::write(log, "a_ratio_avg", std::vector<double>{1.0, 2.0});
+  }
+  try {
+    read_run_file(path);
+    ADD_FAILURE() << "no error for a short column";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ": /log columns of unequal length"),
+              std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
 }
 
 TEST(RunFile, UnreadableFileIsBadInput) {
