@@ -23,7 +23,8 @@
 #                               [--bench build/tests/bench/bench_radial] [--summary]
 # --thickness is passed to bench_radial (its default when absent, 0.125 mm) and names the default
 # directory of any other sheet, build/radial_chain_NODES_hMM (also for --summary).
-# --summary prints the totals over the finished pieces without running anything.
+# --summary prints the totals over the finished pieces without running anything, and for an
+# unfinished chain a projection of the whole interval at the rate of the finished pieces.
 set -euo pipefail
 
 nodes=12000 from=3 to=4 piece=0.05 span=0.002 threads=2 dir="" seed="" thickness="" summary_only=0
@@ -81,7 +82,7 @@ summary() {
   # The "totals:" line after each variant's line holds, in order: measured wall, time covered,
   # steps, explicit steps, switches, implicit attempts, Newton and CG iterations, rejections
   # (error, Newton, not SPD, other), wall implicit, linear, explicit.
-  awk -v npieces="$npieces" '
+  awk -v npieces="$npieces" -v from="$from" -v to="$to" '
     /^explicit only/ { v = "E" }
     /^hybrid, CG \+ block Jacobi 18 / { v = "H" }
     /^ +totals:/ {
@@ -109,6 +110,14 @@ summary() {
         printf "explicit only: %.1f s wall over %d spans (%g s, %d steps), scaled to the finished pieces: %.1f s\n", \
           sum["E", 1], pieces, sum["E", 2], sum["E", 3], scaled
         printf "speed-up of the hybrid over the finished pieces: %.2fx\n", scaled / sum["H", 1]
+      }
+      # An unfinished chain: the whole interval at the rate of the finished pieces (an
+      # estimate: how often the sheet snaps through changes along the interval).
+      if (pieces < npieces && sum["H", 2] > 0) {
+        whole = to - from
+        printf "projected to the whole [%g, %g] at the rate of the finished pieces: hybrid %.0f s", from, to, sum["H", 1] / sum["H", 2] * whole
+        if (sum["E", 2] > 0) printf ", explicit only %.0f s", sum["E", 1] / sum["E", 2] * whole
+        printf "\n"
       }
     }' "${logs[@]}"
 }

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # tests/bench/radial_chain.sh on a 100-node sheet: pieces chain through their end states (whose
 # times land above, on or below the next piece's decimal start), a rerun skips finished pieces
-# and redoes an unfinished one, the summary sums the pieces, and --thickness and
-# --mesh-seed keep sheets apart.
+# and redoes an unfinished one, the summary sums the pieces (and projects an unfinished chain),
+# and --thickness and --mesh-seed keep sheets apart.
 #   test_radial_chain.sh BENCH_RADIAL
 set -euo pipefail
 bench=$1
@@ -28,6 +28,7 @@ grep -q "3 of 3 pieces finished" <<<"$out" || fail "summary: $out"
 grep -q "hybrid, block Jacobi 18: .* s wall, $steps steps" <<<"$out" ||
   fail "summary does not sum the pieces' $steps steps: $out"
 grep -q "explicit only: .* over 3 spans" <<<"$out" || fail "explicit-only spans: $out"
+grep -q "projected" <<<"$out" && fail "a finished chain was projected: $out"
 
 # A rerun runs nothing; an unfinished piece is redone, alone, and the chain is whole again.
 out=$(chain)
@@ -40,6 +41,11 @@ grep -q "3 of 3 pieces finished" <<<"$out" || fail "summary after the redo: $out
 
 # A later piece never warms up: a start state from another time is an error, as is none.
 rm "$dir/chain/piece_0.0700.done"
+# Meanwhile the summary of the two finished pieces projects the whole interval.
+out=$(chain --summary)
+grep -q "2 of 3 pieces finished" <<<"$out" || fail "summary of 2 pieces: $out"
+grep -Eq "projected to the whole \[0.05, 0.08\] at the rate of the finished pieces: hybrid [0-9]+ s, explicit only [0-9]+ s" <<<"$out" ||
+  fail "no projection of the unfinished chain: $out"
 cp "$dir/chain/state_0.0600.h5" "$dir/chain/state_0.0700.h5"
 if chain >/dev/null 2>&1; then fail "a piece started from a state at another time"; fi
 grep -q "require-warm" "$dir/chain/piece_0.0700.log.part" || fail "no --require-warm refusal"
