@@ -8,6 +8,7 @@
 #include "sim/integrate/integrator.hpp"
 #include "sim/integrate/step_toward.hpp"
 #include "tests/integrate/anchor_term.hpp"
+#include "tests/integrate/small_sheet.hpp"
 #include "tests/support/grid_mesh.hpp"
 
 #include <gtest/gtest.h>
@@ -22,32 +23,10 @@ using crumple::testing::AnchorTerm;
 
 namespace {
 
-const Mesh& sheet() {
-  static const Mesh m = crumple::testing::grid_mesh(6, 6, 1.0, 1.0, 0.15, 2);
-  return m;
-}
-
-ModelParams params(double b_iso) {
-  ModelParams mp;
-  mp.ks = 10;
-  mp.kb = 0.01;
-  mp.mass = 1;
-  mp.b_iso = b_iso;
-  return mp;
-}
-
-State stretched(const SheetModel& model, double factor) {
-  State s = model.rest_state();
-  s.x *= factor;
-  return s;
-}
-
-// Stretched by 5 % and bent a little, so that stretching and bending both relax.
-State stretched_and_bent(const SheetModel& model) {
-  State s = stretched(model, 1.05);
-  for (Index i = 0; i < model.num_nodes(); ++i) s.x[3 * i + 2] = 0.05 * std::sin(3 * s.x[3 * i]);
-  return s;
-}
+const Mesh& sheet() { return crumple::testing::small_sheet(); }
+ModelParams params(double b_iso) { return crumple::testing::small_sheet_params(b_iso); }
+using crumple::testing::stretched;
+using crumple::testing::stretched_and_bent;
 
 // The rest state with every coordinate moved by amplitude * N(0, 1), seeded.
 State jiggled(const SheetModel& model, double amplitude, unsigned seed) {

@@ -10,7 +10,7 @@
 // seeded with a reference solution at t0 - k h, so no start-up at lower order pollutes the
 // error, and every step runs at bdf_order (checked in the step log).
 #include "sim/integrate/integrator.hpp"
-#include "tests/support/grid_mesh.hpp"
+#include "tests/integrate/small_sheet.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,27 +21,10 @@ using namespace crumple;
 
 namespace {
 
-const Mesh& sheet() {
-  static const Mesh m = crumple::testing::grid_mesh(6, 6, 1.0, 1.0, 0.15, 2);
-  return m;
-}
-
-ModelParams params() {
-  ModelParams mp;
-  mp.ks = 10;
-  mp.kb = 0.01;
-  mp.mass = 1;
-  mp.b_iso = 2;
-  return mp;
-}
-
+const Mesh& sheet() { return crumple::testing::small_sheet(); }
+ModelParams params() { return crumple::testing::small_sheet_params(2.0); }
 // Stretched by 5 % and bent, so that both stretching and bending relax over [0, T].
-State start(const SheetModel& model) {
-  State s = model.rest_state();
-  s.x *= 1.05;
-  for (Index i = 0; i < model.num_nodes(); ++i) s.x[3 * i + 2] = 0.05 * std::sin(3 * s.x[3 * i]);
-  return s;
-}
+State start(const SheetModel& model) { return crumple::testing::stretched_and_bent(model); }
 
 IntegratorSettings quasistatic(int order) {
   IntegratorSettings st;
