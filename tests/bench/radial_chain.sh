@@ -20,14 +20,22 @@
 #   tests/bench/radial_chain.sh [--nodes 12000] [--from 3] [--to 4] [--piece 0.05]
 #                               [--span 0.002] [--threads 2] [--dir build/radial_chain_NODES]
 #                               [--seed FILE] [--thickness MM]
-#                               [--bench build/tests/bench/bench_radial] [--summary]
+#                               [--bench build/tests/bench/bench_radial] [--record DIR]
+#                               [--summary]
 # --thickness is passed to bench_radial (its default when absent, 0.125 mm) and names the default
 # directory of any other sheet, build/radial_chain_NODES_hMM (also for --summary).
 # --summary prints the totals over the finished pieces without running anything, and for an
-# unfinished chain a projection of the whole interval at the rate of the finished pieces.
+# unfinished chain a projection of the whole interval at the rate of the finished pieces (with
+# --record, the record's pieces count as finished).
+# --record DIR keeps the chain in a directory meant for the sources (tests/bench/records), so
+# that it survives the machine: it holds the finished pieces' logs, the start state of the next
+# piece (before the first piece is done, the warm-up's progress) and the checksum of the chain's
+# bench_radial. A chain directory that lacks what the record holds is filled from it before
+# anything runs, and a record made with another bench_radial is refused (build the commit named
+# in the record's README and pass that program with --bench).
 set -euo pipefail
 
-nodes=12000 from=3 to=4 piece=0.05 span=0.002 threads=2 dir="" seed="" thickness="" summary_only=0
+nodes=12000 from=3 to=4 piece=0.05 span=0.002 threads=2 dir="" seed="" thickness="" summary_only=0 record=""
 bench=build/tests/bench/bench_radial
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -41,6 +49,7 @@ while [ $# -gt 0 ]; do
     --seed) seed=$2; shift 2 ;;
     --thickness) thickness=$2; shift 2 ;;
     --bench) bench=$2; shift 2 ;;
+    --record) record=$2; shift 2 ;;
     --summary) summary_only=1; shift ;;
     *) echo "radial_chain.sh: unknown argument '$1' (see the header of $0)" >&2; exit 2 ;;
   esac
@@ -73,10 +82,14 @@ summary() {
   for ((k = 0; k < npieces; ++k)); do
     local t
     t=$(piece_start "$k")
-    [ -f "$dir/piece_$t.done" ] && logs+=("$dir/piece_$t.log")
+    if [ -f "$dir/piece_$t.done" ]; then
+      logs+=("$dir/piece_$t.log")
+    elif [ -n "$record" ] && [ -f "$record/piece_$t.log" ]; then
+      logs+=("$record/piece_$t.log")
+    fi
   done
   if [ ${#logs[@]} -eq 0 ]; then
-    echo "no finished piece in $dir"
+    echo "no finished piece in $dir${record:+ or $record}"
     return 0
   fi
   # The "totals:" line after each variant's line holds, in order: measured wall, time covered,
@@ -134,6 +147,30 @@ if [ ! -x "$dir/bench_radial" ]; then
   [ -x "$bench" ] || { echo "radial_chain.sh: $bench not found (make build)" >&2; exit 2; }
   cp "$bench" "$dir/bench_radial.part" && mv "$dir/bench_radial.part" "$dir/bench_radial"
 fi
+program_sum() { sha256sum "$dir/bench_radial" | cut -d' ' -f1; }
+# Copies a file into the record so that it is never seen half written.
+to_record() { cp "$1" "$record/$2.part" && mv "$record/$2.part" "$record/$2"; }
+if [ -n "$record" ]; then
+  mkdir -p "$record"
+  if [ -f "$record/program.sha256" ] && [ "$(cat "$record/program.sha256")" != "$(program_sum)" ]; then
+    echo "radial_chain.sh: $record was measured with another bench_radial than $dir/bench_radial" \
+      "(sha256 $(cat "$record/program.sha256")); build the commit its README names and pass" \
+      "that program with --bench to a new --dir" >&2
+    exit 2
+  fi
+  program_sum >"$record/program.sha256"
+  for f in "$record"/piece_*.log; do
+    [ -e "$f" ] || continue
+    b=$(basename "$f" .log)
+    if [ ! -f "$dir/$b.done" ]; then
+      cp "$f" "$dir/$b.log"
+      touch "$dir/$b.done"
+    fi
+  done
+  for f in "$record"/state_*.h5; do
+    if [ -e "$f" ] && [ ! -f "$dir/$(basename "$f")" ]; then cp "$f" "$dir/"; fi
+  done
+fi
 first=$(piece_start 0)
 if [ -n "$seed" ] && [ ! -f "$dir/state_$first.h5" ]; then
   cp "$seed" "$dir/state_$first.h5"
@@ -151,9 +188,16 @@ for ((k = 0; k < npieces; ++k)); do
     fi
     warm=(--require-warm)
   fi
+  # A recorded chain warms up in its record, which so keeps the warm-up's progress (every 5 ms of
+  # simulated time) when the machine goes before the first piece is done.
+  start="$dir/state_$t.h5"
+  if [ "$k" -eq 0 ] && [ -n "$record" ]; then
+    if [ -f "$start" ] && [ ! -f "$record/state_$t.h5" ]; then to_record "$start" "state_$t.h5"; fi
+    start="$record/state_$t.h5"
+  fi
   echo "== piece [$t, $t1] at $nodes nodes -> $dir/piece_$t.log"
   if ! "$dir/bench_radial" --nodes "$nodes" "${sheet[@]}" --threads "$threads" --t0 "$t" --dt "$piece" \
-      --variants block-jacobi --explicit-span "$span" --warm-state "$dir/state_$t.h5" "${warm[@]}" \
+      --variants block-jacobi --explicit-span "$span" --warm-state "$start" "${warm[@]}" \
       --save-end "$dir/state_$t1.h5" --progress >"$dir/piece_$t.log.part" 2>&1; then
     echo "radial_chain.sh: bench_radial failed on [$t, $t1]; see $dir/piece_$t.log.part" >&2
     exit 1
@@ -165,5 +209,12 @@ for ((k = 0; k < npieces; ++k)); do
   fi
   mv "$dir/piece_$t.log.part" "$dir/piece_$t.log"
   touch "$dir/piece_$t.done"
+  if [ -n "$record" ]; then
+    # The next piece's start first: a record caught in between holds one state too many, never
+    # a finished piece without the state to go on from.
+    to_record "$dir/state_$t1.h5" "state_$t1.h5"
+    to_record "$dir/piece_$t.log" "piece_$t.log"
+    rm -f "$record/state_$t.h5"
+  fi
 done
 summary

@@ -2,7 +2,8 @@
 # tests/bench/radial_chain.sh on a 100-node sheet: pieces chain through their end states (whose
 # times land above, on or below the next piece's decimal start), a rerun skips finished pieces
 # and redoes an unfinished one, the summary sums the pieces (and projects an unfinished chain),
-# and --thickness and --mesh-seed keep sheets apart.
+# --record keeps the chain where it survives the build directory, and --thickness and --mesh-seed
+# keep sheets apart.
 #   test_radial_chain.sh BENCH_RADIAL
 set -euo pipefail
 bench=$1
@@ -38,6 +39,40 @@ out=$(chain)
 [ "$(grep -c "== piece" <<<"$out")" = 1 ] || fail "expected one piece redone: $out"
 [ -f "$dir/chain/piece_0.0600.done" ] || fail "the redone piece did not finish"
 grep -q "3 of 3 pieces finished" <<<"$out" || fail "summary after the redo: $out"
+
+# --record: after each piece the record holds the finished logs and only the next start state;
+# a new chain directory is filled from it and runs only what it lacks, and so does --summary.
+rec=$dir/record
+chain --dir "$dir/r1" --record "$rec" --to 0.07 --seed "$dir/chain/state_0.0500.h5" >/dev/null ||
+  fail "the recorded chain failed"
+[ "$(cd "$rec" && echo *)" = "piece_0.0500.log piece_0.0600.log program.sha256 state_0.0700.h5" ] ||
+  fail "record after two pieces: $(cd "$rec" && echo *)"
+out=$(chain --dir "$dir/r2" --record "$rec")
+[ "$(grep -c "== piece" <<<"$out")" = 1 ] && grep -q "== piece \[0.0700, 0.0800\]" <<<"$out" ||
+  fail "a chain from the record did not run just the missing piece: $out"
+grep -q "warm state at t0 = 0.07 s read from" "$dir/r2/piece_0.0700.log" ||
+  fail "the piece after the record did not start from the record's state"
+grep -q "3 of 3 pieces finished" <<<"$out" || fail "summary with the record: $out"
+[ -f "$rec/piece_0.0700.log" ] && [ -f "$rec/state_0.0800.h5" ] && [ ! -e "$rec/state_0.0700.h5" ] ||
+  fail "record after the third piece: $(cd "$rec" && echo *)"
+grep -q "3 of 3 pieces finished" <<<"$(chain --dir "$dir/none" --record "$rec" --summary)" ||
+  fail "--summary does not count the record's pieces"
+# A recorded chain warms up in its record: an earlier state there is where the warm-up goes on.
+"$bench" --nodes 100 --t0 0.02 --dt 0.005 --variants hybrid --warm-state "$dir/early.h5" >/dev/null ||
+  fail "bench_radial to t = 0.02 s failed"
+mkdir "$dir/rec0"
+cp "$dir/early.h5" "$dir/rec0/state_0.0500.h5"
+chain --dir "$dir/r0" --record "$dir/rec0" --to 0.06 >/dev/null || fail "the chain from rec0 failed"
+grep -q "warm state at t = 0.02 s read from $dir/rec0/state_0.0500.h5" "$dir/r0/piece_0.0500.log" ||
+  fail "the first piece of a recorded chain did not warm up from the record's state"
+[ -f "$dir/rec0/state_0.0600.h5" ] && [ ! -e "$dir/rec0/state_0.0500.h5" ] ||
+  fail "rec0 after its piece: $(cd "$dir/rec0" && echo *)"
+cp "$bench" "$dir/other_bench"
+echo >>"$dir/other_bench"
+if chain --bench "$dir/other_bench" --dir "$dir/r3" --record "$rec" >/dev/null 2>"$dir/r3.err"; then
+  fail "a record was continued with another bench_radial"
+fi
+grep -q "measured with another bench_radial" "$dir/r3.err" || fail "refusal: $(cat "$dir/r3.err")"
 
 # A later piece never warms up: a start state from another time is an error, as is none.
 rm "$dir/chain/piece_0.0700.done"
