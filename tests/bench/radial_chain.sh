@@ -29,10 +29,12 @@
 # --record, the record's pieces count as finished).
 # --record DIR keeps the chain in a directory meant for the sources (tests/bench/records), so
 # that it survives the machine: it holds the finished pieces' logs, the start state of the next
-# piece (before the first piece is done, the warm-up's progress) and the checksum of the chain's
-# bench_radial. A chain directory that lacks what the record holds is filled from it before
-# anything runs, and a record made with another bench_radial is refused (build the commit named
-# in the record's README and pass that program with --bench).
+# piece (before the first piece is done, the warm-up's progress: the first piece warms up in the
+# record), the checksum of the chain's bench_radial and the chain's parameters. A chain directory
+# that lacks what the record holds is filled from it before anything runs, and a record that
+# lacks what the directory holds is brought up to it. A record is refused to another
+# bench_radial (build the commit named in the record's README and pass that program with
+# --bench) and to other parameters.
 set -euo pipefail
 
 nodes=12000 from=3 to=4 piece=0.05 span=0.002 threads=2 dir="" seed="" thickness="" summary_only=0 record=""
@@ -140,6 +142,58 @@ if [ "$summary_only" = 1 ]; then
   exit 0
 fi
 mkdir -p "$dir"
+sum_of() { sha256sum "$1" | cut -d' ' -f1; }
+# Copies a file into the record so that it is never seen half written.
+to_record() { cp "$1" "$record/$2.part" && mv "$record/$2.part" "$record/$2"; }
+# Brings the record up to the chain directory (a piece finished before --record was given, or a
+# run stopped halfway through this): every finished piece's log, and of the states only the start
+# of the first unfinished piece. That state goes in before the logs, so that a record caught in
+# between still holds the start of every piece it does not count as finished.
+sync_record() {
+  local k t next=""
+  for ((k = 0; k < npieces; ++k)); do
+    t=$(piece_start "$k")
+    if [ ! -f "$dir/piece_$t.done" ]; then next=$t; break; fi
+  done
+  [ -n "$next" ] || next=$(piece_start "$npieces")
+  if [ ! -f "$record/state_$next.h5" ] && [ -f "$dir/state_$next.h5" ]; then
+    to_record "$dir/state_$next.h5" "state_$next.h5"
+  fi
+  for ((k = 0; k < npieces; ++k)); do
+    t=$(piece_start "$k")
+    if [ -f "$dir/piece_$t.done" ] && [ ! -f "$record/piece_$t.log" ]; then
+      to_record "$dir/piece_$t.log" "piece_$t.log"
+    fi
+  done
+  [ -f "$record/state_$next.h5" ] || return 0
+  local f
+  for f in "$record"/state_*.h5; do
+    if [ -e "$f" ] && [ "$f" != "$record/state_$next.h5" ]; then rm -f "$f"; fi
+  done
+}
+if [ -n "$record" ]; then
+  # A record goes on only with its own program and parameters (all but --to: a chain may be
+  # extended), checked before anything is copied or run, against the program this directory
+  # would run.
+  program=$bench
+  [ -x "$dir/bench_radial" ] && program=$dir/bench_radial
+  [ -x "$program" ] || { echo "radial_chain.sh: $program not found (make build)" >&2; exit 2; }
+  g() { awk -v x="$1" 'BEGIN { printf "%g", x }'; }
+  args="nodes $nodes, thickness ${thickness:-0.125} mm, pieces from $(g "$from") s of $(g "$piece") s, explicit-only span $(g "$span") s, $threads threads"
+  if [ -f "$record/program.sha256" ] && [ "$(cat "$record/program.sha256")" != "$(sum_of "$program")" ]; then
+    echo "radial_chain.sh: $record was measured with another bench_radial than $program (sha256" \
+      "$(cat "$record/program.sha256")); build the commit its README names and pass that program" \
+      "with --bench" >&2
+    if [ "$program" != "$bench" ]; then
+      echo "  ($dir keeps its own copy of another program: give a new --dir as well)" >&2
+    fi
+    exit 2
+  fi
+  if [ -f "$record/chain.args" ] && [ "$(cat "$record/chain.args")" != "$args" ]; then
+    echo "radial_chain.sh: $record holds the chain of $(cat "$record/chain.args"), not $args" >&2
+    exit 2
+  fi
+fi
 # Every piece runs the same program: the chain keeps its own copy of bench_radial from its first
 # run (a rebuild meanwhile does not mix two versions into one figure; a new chain directory
 # takes the new one).
@@ -147,18 +201,10 @@ if [ ! -x "$dir/bench_radial" ]; then
   [ -x "$bench" ] || { echo "radial_chain.sh: $bench not found (make build)" >&2; exit 2; }
   cp "$bench" "$dir/bench_radial.part" && mv "$dir/bench_radial.part" "$dir/bench_radial"
 fi
-program_sum() { sha256sum "$dir/bench_radial" | cut -d' ' -f1; }
-# Copies a file into the record so that it is never seen half written.
-to_record() { cp "$1" "$record/$2.part" && mv "$record/$2.part" "$record/$2"; }
 if [ -n "$record" ]; then
   mkdir -p "$record"
-  if [ -f "$record/program.sha256" ] && [ "$(cat "$record/program.sha256")" != "$(program_sum)" ]; then
-    echo "radial_chain.sh: $record was measured with another bench_radial than $dir/bench_radial" \
-      "(sha256 $(cat "$record/program.sha256")); build the commit its README names and pass" \
-      "that program with --bench to a new --dir" >&2
-    exit 2
-  fi
-  program_sum >"$record/program.sha256"
+  [ -f "$record/program.sha256" ] || sum_of "$dir/bench_radial" >"$record/program.sha256"
+  [ -f "$record/chain.args" ] || echo "$args" >"$record/chain.args"
   for f in "$record"/piece_*.log; do
     [ -e "$f" ] || continue
     b=$(basename "$f" .log)
@@ -175,6 +221,7 @@ first=$(piece_start 0)
 if [ -n "$seed" ] && [ ! -f "$dir/state_$first.h5" ]; then
   cp "$seed" "$dir/state_$first.h5"
 fi
+[ -z "$record" ] || sync_record
 for ((k = 0; k < npieces; ++k)); do
   t=$(piece_start "$k")
   t1=$(piece_start $((k + 1)))
@@ -191,10 +238,7 @@ for ((k = 0; k < npieces; ++k)); do
   # A recorded chain warms up in its record, which so keeps the warm-up's progress (every 5 ms of
   # simulated time) when the machine goes before the first piece is done.
   start="$dir/state_$t.h5"
-  if [ "$k" -eq 0 ] && [ -n "$record" ]; then
-    if [ -f "$start" ] && [ ! -f "$record/state_$t.h5" ]; then to_record "$start" "state_$t.h5"; fi
-    start="$record/state_$t.h5"
-  fi
+  if [ "$k" -eq 0 ] && [ -n "$record" ]; then start="$record/state_$t.h5"; fi
   echo "== piece [$t, $t1] at $nodes nodes -> $dir/piece_$t.log"
   if ! "$dir/bench_radial" --nodes "$nodes" "${sheet[@]}" --threads "$threads" --t0 "$t" --dt "$piece" \
       --variants block-jacobi --explicit-span "$span" --warm-state "$start" "${warm[@]}" \
@@ -209,12 +253,6 @@ for ((k = 0; k < npieces; ++k)); do
   fi
   mv "$dir/piece_$t.log.part" "$dir/piece_$t.log"
   touch "$dir/piece_$t.done"
-  if [ -n "$record" ]; then
-    # The next piece's start first: a record caught in between holds one state too many, never
-    # a finished piece without the state to go on from.
-    to_record "$dir/state_$t1.h5" "state_$t1.h5"
-    to_record "$dir/piece_$t.log" "piece_$t.log"
-    rm -f "$record/state_$t.h5"
-  fi
+  [ -z "$record" ] || sync_record
 done
 summary

@@ -45,16 +45,17 @@ grep -q "3 of 3 pieces finished" <<<"$out" || fail "summary after the redo: $out
 rec=$dir/record
 chain --dir "$dir/r1" --record "$rec" --to 0.07 --seed "$dir/chain/state_0.0500.h5" >/dev/null ||
   fail "the recorded chain failed"
-[ "$(cd "$rec" && echo *)" = "piece_0.0500.log piece_0.0600.log program.sha256 state_0.0700.h5" ] ||
-  fail "record after two pieces: $(cd "$rec" && echo *)"
+listing() { (cd "$1" && echo *); }
+[ "$(listing "$rec")" = "chain.args piece_0.0500.log piece_0.0600.log program.sha256 state_0.0700.h5" ] ||
+  fail "record after two pieces: $(listing "$rec")"
 out=$(chain --dir "$dir/r2" --record "$rec")
 [ "$(grep -c "== piece" <<<"$out")" = 1 ] && grep -q "== piece \[0.0700, 0.0800\]" <<<"$out" ||
   fail "a chain from the record did not run just the missing piece: $out"
 grep -q "warm state at t0 = 0.07 s read from" "$dir/r2/piece_0.0700.log" ||
   fail "the piece after the record did not start from the record's state"
 grep -q "3 of 3 pieces finished" <<<"$out" || fail "summary with the record: $out"
-[ -f "$rec/piece_0.0700.log" ] && [ -f "$rec/state_0.0800.h5" ] && [ ! -e "$rec/state_0.0700.h5" ] ||
-  fail "record after the third piece: $(cd "$rec" && echo *)"
+whole="chain.args piece_0.0500.log piece_0.0600.log piece_0.0700.log program.sha256 state_0.0800.h5"
+[ "$(listing "$rec")" = "$whole" ] || fail "record after the third piece: $(listing "$rec")"
 grep -q "3 of 3 pieces finished" <<<"$(chain --dir "$dir/none" --record "$rec" --summary)" ||
   fail "--summary does not count the record's pieces"
 # A recorded chain warms up in its record: an earlier state there is where the warm-up goes on.
@@ -65,14 +66,29 @@ cp "$dir/early.h5" "$dir/rec0/state_0.0500.h5"
 chain --dir "$dir/r0" --record "$dir/rec0" --to 0.06 >/dev/null || fail "the chain from rec0 failed"
 grep -q "warm state at t = 0.02 s read from $dir/rec0/state_0.0500.h5" "$dir/r0/piece_0.0500.log" ||
   fail "the first piece of a recorded chain did not warm up from the record's state"
-[ -f "$dir/rec0/state_0.0600.h5" ] && [ ! -e "$dir/rec0/state_0.0500.h5" ] ||
-  fail "rec0 after its piece: $(cd "$dir/rec0" && echo *)"
+[ "$(listing "$dir/rec0")" = "chain.args piece_0.0500.log program.sha256 state_0.0600.h5" ] ||
+  fail "rec0 after its piece: $(listing "$dir/rec0")"
 cp "$bench" "$dir/other_bench"
 echo >>"$dir/other_bench"
 if chain --bench "$dir/other_bench" --dir "$dir/r3" --record "$rec" >/dev/null 2>"$dir/r3.err"; then
   fail "a record was continued with another bench_radial"
 fi
 grep -q "measured with another bench_radial" "$dir/r3.err" || fail "refusal: $(cat "$dir/r3.err")"
+[ "$(cat "$rec/program.sha256")" = "$(sha256sum "$bench" | cut -d' ' -f1)" ] ||
+  fail "a refused program changed the record's checksum"
+[ ! -e "$dir/r3/bench_radial" ] || fail "a refused program was copied into the chain directory"
+# Nor does it go on with other parameters.
+if chain --dir "$dir/r4" --record "$rec" --span 0.001 >/dev/null 2>"$dir/r4.err"; then
+  fail "a record was continued with another span"
+fi
+grep -q "holds the chain of .*span 0.0005 s" "$dir/r4.err" || fail "refusal: $(cat "$dir/r4.err")"
+# A record given to a chain that is ahead of it (pieces finished without --record) catches up,
+# and one state too many (a run stopped between its copies) goes.
+mkdir "$dir/late"
+cp "$dir/chain/state_0.0600.h5" "$dir/late/state_0.0600.h5"
+out=$(chain --record "$dir/late")
+grep -q "== piece" <<<"$out" && fail "a record catching up ran a piece: $out"
+[ "$(listing "$dir/late")" = "$whole" ] || fail "the late record did not catch up: $(listing "$dir/late")"
 
 # A later piece never warms up: a start state from another time is an error, as is none.
 rm "$dir/chain/piece_0.0700.done"
