@@ -56,8 +56,10 @@ while [ $# -gt 0 ]; do
     *) echo "radial_chain.sh: unknown argument '$1' (see the header of $0)" >&2; exit 2 ;;
   esac
 done
-# One spelling per sheet (0.25 = 0.250); the default sheet keeps the plain name and flags.
-[ -n "$thickness" ] && thickness=$(awk -v x="$thickness" 'BEGIN { printf "%g", x }')
+# One spelling of a number (0.25 = 0.250, 3 = 3.0), so one per sheet; the default sheet keeps the
+# plain name and flags.
+num() { awk -v x="$1" 'BEGIN { printf "%g", x }'; }
+[ -n "$thickness" ] && thickness=$(num "$thickness")
 [ "$thickness" = 0.125 ] && thickness=""
 dir=${dir:-build/radial_chain_$nodes${thickness:+_h$thickness}}
 sheet=()
@@ -143,8 +145,9 @@ if [ "$summary_only" = 1 ]; then
 fi
 mkdir -p "$dir"
 sum_of() { sha256sum "$1" | cut -d' ' -f1; }
-# Copies a file into the record so that it is never seen half written.
-to_record() { cp "$1" "$record/$2.part" && mv "$record/$2.part" "$record/$2"; }
+# Copies a file so that the copy is never seen half written.
+copy_whole() { cp "$1" "$2.part" && mv "$2.part" "$2"; }
+to_record() { copy_whole "$1" "$record/$2"; }
 # Brings the record up to the chain directory (a piece finished before --record was given, or a
 # run stopped halfway through this): every finished piece's log, and of the states only the start
 # of the first unfinished piece. That state goes in before the logs, so that a record caught in
@@ -171,15 +174,16 @@ sync_record() {
     if [ -e "$f" ] && [ "$f" != "$record/state_$next.h5" ]; then rm -f "$f"; fi
   done
 }
+# Every piece runs the same program: the chain keeps its own copy of bench_radial from its first
+# run (a rebuild meanwhile does not mix two versions into one figure; a new chain directory
+# takes the new one).
+program=$bench
+[ -x "$dir/bench_radial" ] && program=$dir/bench_radial
+[ -x "$program" ] || { echo "radial_chain.sh: $program not found (make build)" >&2; exit 2; }
 if [ -n "$record" ]; then
   # A record goes on only with its own program and parameters (all but --to: a chain may be
-  # extended), checked before anything is copied or run, against the program this directory
-  # would run.
-  program=$bench
-  [ -x "$dir/bench_radial" ] && program=$dir/bench_radial
-  [ -x "$program" ] || { echo "radial_chain.sh: $program not found (make build)" >&2; exit 2; }
-  g() { awk -v x="$1" 'BEGIN { printf "%g", x }'; }
-  args="nodes $nodes, thickness ${thickness:-0.125} mm, pieces from $(g "$from") s of $(g "$piece") s, explicit-only span $(g "$span") s, $threads threads"
+  # extended), checked before anything is copied or run.
+  args="nodes $nodes, thickness ${thickness:-0.125} mm, pieces from $(num "$from") s of $(num "$piece") s, explicit-only span $(num "$span") s, $threads threads"
   if [ -f "$record/program.sha256" ] && [ "$(cat "$record/program.sha256")" != "$(sum_of "$program")" ]; then
     echo "radial_chain.sh: $record was measured with another bench_radial than $program (sha256" \
       "$(cat "$record/program.sha256")); build the commit its README names and pass that program" \
@@ -194,13 +198,7 @@ if [ -n "$record" ]; then
     exit 2
   fi
 fi
-# Every piece runs the same program: the chain keeps its own copy of bench_radial from its first
-# run (a rebuild meanwhile does not mix two versions into one figure; a new chain directory
-# takes the new one).
-if [ ! -x "$dir/bench_radial" ]; then
-  [ -x "$bench" ] || { echo "radial_chain.sh: $bench not found (make build)" >&2; exit 2; }
-  cp "$bench" "$dir/bench_radial.part" && mv "$dir/bench_radial.part" "$dir/bench_radial"
-fi
+[ "$program" = "$dir/bench_radial" ] || copy_whole "$bench" "$dir/bench_radial"
 if [ -n "$record" ]; then
   mkdir -p "$record"
   [ -f "$record/program.sha256" ] || sum_of "$dir/bench_radial" >"$record/program.sha256"
