@@ -207,17 +207,17 @@ if [ -n "$record" ]; then
     [ -e "$f" ] || continue
     b=$(basename "$f" .log)
     if [ ! -f "$dir/$b.done" ]; then
-      cp "$f" "$dir/$b.log"
+      copy_whole "$f" "$dir/$b.log"
       touch "$dir/$b.done"
     fi
   done
   for f in "$record"/state_*.h5; do
-    if [ -e "$f" ] && [ ! -f "$dir/$(basename "$f")" ]; then cp "$f" "$dir/"; fi
+    if [ -e "$f" ] && [ ! -f "$dir/$(basename "$f")" ]; then copy_whole "$f" "$dir/$(basename "$f")"; fi
   done
 fi
 first=$(piece_start 0)
 if [ -n "$seed" ] && [ ! -f "$dir/state_$first.h5" ]; then
-  cp "$seed" "$dir/state_$first.h5"
+  copy_whole "$seed" "$dir/state_$first.h5"
 fi
 [ -z "$record" ] || sync_record
 for ((k = 0; k < npieces; ++k)); do
