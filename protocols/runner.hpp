@@ -1,4 +1,4 @@
-// The protocol runner: cycles of stages driving a time stepper (DESIGN.md §6; issue 5).
+// The protocol runner: cycles of stages driving a time stepper (docs/MODEL.md §11.1; issue 5).
 //
 // The runner owns no physics and no files. It builds each stage from its parameters, lets it add
 // its terms, advances the stepper in chunks on a fixed time grid (the stage's check interval
@@ -51,6 +51,9 @@ class RunSink {
  public:
   virtual ~RunSink() = default;
   virtual void frame(const State& s, const std::string& stage, int cycle) = 0;
+  /// End of stage `index` (0-based) of cycle `cycle`, after the stage removed its terms.
+  virtual void stage_end(int /*cycle*/, int /*index*/, const std::string& /*type*/,
+                         const State& /*s*/) {}
   /// End of cycle `cycle` (after its last stage): the plastic field and geometry to keep.
   virtual void cycle_end(int cycle, const State& s) = 0;
   /// Persist everything so far together with the checkpoint (atomically).

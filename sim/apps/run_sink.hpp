@@ -15,6 +15,9 @@ class FileSink : public RunSink {
   void frame(const State& s, const std::string& stage, int cycle) override {
     rec_.frames.push_back({s, stage, cycle, integ_.summary().steps()});
   }
+  void stage_end(int cycle, int index, const std::string& type, const State& s) override {
+    rec_.stage_ends.push_back({cycle, index, type, s.t, s.p});
+  }
   void cycle_end(int cycle, const State& s) override {
     CycleRecord c;
     c.cycle = cycle;

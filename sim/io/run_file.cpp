@@ -214,6 +214,16 @@ void write_run_file(const std::string& path, const RunRecord& r) {
     h5::attr(g, "cycle", std::int64_t{c.cycle});
     h5::attr(g, "crease_threshold", c.crease_threshold);
   }
+  H5::Group stage_ends = h5::group(root, "stage_ends");
+  for (std::size_t k = 0; k < r.stage_ends.size(); ++k) {
+    const StageEndRecord& e = r.stage_ends[k];
+    H5::Group g = h5::group(stage_ends, numbered(static_cast<long>(k), 6));
+    h5::write(g, "p", to_vec(e.p));
+    h5::attr(g, "t", e.t);
+    h5::attr(g, "cycle", std::int64_t{e.cycle});
+    h5::attr(g, "stage", e.stage);
+    h5::attr(g, "stage_index", std::int64_t{e.stage_index});
+  }
   H5::Group log = h5::group(root, "log");
   h5::write(log, "t", log_column(r.log, [](const LogRow& x) { return x.t; }));
   h5::write(log, "h", log_column(r.log, [](const LogRow& x) { return x.h; }));
@@ -285,6 +295,19 @@ RunRecord read_run_file(const std::string& path) {
       c.cycle = static_cast<int>(h5::attr_int(g, "cycle"));
       c.crease_threshold = h5::attr_double(g, "crease_threshold");
       r.cycles.push_back(std::move(c));
+    }
+    if (h5::exists(root, "stage_ends")) {  // files written before per-stage records lack it
+      H5::Group stage_ends = root.openGroup("stage_ends");
+      for (const auto& name : h5::members(stage_ends)) {
+        H5::Group g = stage_ends.openGroup(name);
+        StageEndRecord e;
+        e.p = to_eigen(h5::read_doubles(g, "p"));
+        e.t = h5::attr_double(g, "t");
+        e.cycle = static_cast<int>(h5::attr_int(g, "cycle"));
+        e.stage = h5::attr_string(g, "stage");
+        e.stage_index = static_cast<int>(h5::attr_int(g, "stage_index"));
+        r.stage_ends.push_back(std::move(e));
+      }
     }
     H5::Group log = root.openGroup("log");
     const auto t = h5::read_doubles(log, "t"), hh = h5::read_doubles(log, "h"),

@@ -34,12 +34,22 @@ struct CycleRecord {
   double crease_threshold = 0;
 };
 
+/// The plastic field at the end of one stage of one cycle (per-stage crease accounting).
+struct StageEndRecord {
+  int cycle = 0;        ///< 1-based
+  int stage_index = 0;  ///< 0-based position of the stage in the cycle
+  std::string stage;    ///< stage type
+  double t = 0;
+  VecX p;
+};
+
 struct RunRecord {
   RunMeta meta;
   std::string config;  ///< resolved YAML
   Mesh mesh;
   std::vector<FrameRecord> frames;
   std::vector<CycleRecord> cycles;
+  std::vector<StageEndRecord> stage_ends;  ///< absent (empty) in older files
   std::vector<LogRow> log;
   /// The integrator's counters over the whole run (attributes of /log); absent in files
   /// written before they were stored.

@@ -32,6 +32,8 @@ TEST(RunFile, RoundTripIsExact) {
   for (int k = 0; k < 3; ++k) r.frames.push_back({State{random_vec(n3), random_vec(n3), random_vec(nh), 0.1 * k}, "roll", 1, 10L * k});
   CycleRecord c{1, 2.5, random_vec(n3), random_vec(nh), std::vector<std::uint8_t>(nh, 1), 0.05};
   r.cycles.push_back(c);
+  r.stage_ends.push_back({1, 0, "roll", 0.2, random_vec(nh)});
+  r.stage_ends.push_back({1, 1, "compress", 1.25, random_vec(nh)});
   LogRow row;
   row.t = 0.3, row.h = 1e-3, row.mode = 1, row.newton_iters = 2, row.cg_iters = 40, row.e_bend = 7;
   row.order = 3, row.a_ratio = 2e-3, row.a_ratio_avg = 1.5e-3;
@@ -69,6 +71,12 @@ TEST(RunFile, RoundTripIsExact) {
   ASSERT_EQ(q.cycles.size(), 1u);
   EXPECT_EQ(q.cycles[0].p, c.p);
   EXPECT_EQ(q.cycles[0].crease_mask, c.crease_mask);
+  ASSERT_EQ(q.stage_ends.size(), 2u);
+  EXPECT_EQ(q.stage_ends[1].p, r.stage_ends[1].p);
+  EXPECT_EQ(q.stage_ends[1].stage, "compress");
+  EXPECT_EQ(q.stage_ends[1].stage_index, 1);
+  EXPECT_EQ(q.stage_ends[1].cycle, 1);
+  EXPECT_EQ(q.stage_ends[1].t, 1.25);
   ASSERT_EQ(q.log.size(), 2u);
   EXPECT_EQ(q.log[1].cg_iters, 40);
   EXPECT_EQ(q.log[1].e_bend, 7);
@@ -102,7 +110,12 @@ TEST(RunFile, OlderLogWithoutTheAverageAndUnequalColumns) {
     H5::Group log = f.openGroup("log");
     ASSERT_GE(H5Ldelete(log.getId(), "a_ratio_avg", H5P_DEFAULT), 0);
   }
+  {
+    H5::H5File f(path, H5F_ACC_RDWR);
+    ASSERT_GE(H5Ldelete(f.getId(), "stage_ends", H5P_DEFAULT), 0);  // written before it existed
+  }
   const RunRecord q = read_run_file(path);
+  EXPECT_TRUE(q.stage_ends.empty());
   ASSERT_EQ(q.log.size(), 3u);
   EXPECT_TRUE(std::isnan(q.log[2].a_ratio_avg));
   EXPECT_EQ(q.log[2].a_ratio, 1e-4);
