@@ -1,4 +1,4 @@
-// A protocol stage: what acts on the sheet between two stop conditions (DESIGN.md §6).
+// A protocol stage: what acts on the sheet between two stop conditions (docs/MODEL.md §11.1).
 //
 // A stage never touches solver internals. In begin() it adds external terms to the model
 // (walls, pistons, tethers: see protocols/terms) through own(); done() is asked after every
@@ -48,6 +48,9 @@ struct StageContext {
 
   /// Largest node speed and the kinetic energy of the current state.
   double max_speed() const;
+  /// Largest node speed relative to the best-fit rigid motion of the sheet (rigid_motion.hpp):
+  /// a free sheet that drifts or spins as a whole is still quiescent in its shape.
+  double max_deformation_speed() const;
   double kinetic_energy() const;
   /// Largest |F_i|/m over nodes: the acceleration the quasistatic solver leaves.
   double max_acceleration() const;

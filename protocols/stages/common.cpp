@@ -30,7 +30,7 @@ double reference_acceleration(const StageContext& ctx) {
 bool quiescent(const StageContext& ctx, double ratio, double speed, double* a_ratio,
                double* speed_sizes) {
   const double a = ctx.max_acceleration() / reference_acceleration(ctx);
-  const double v = ctx.max_speed() / ctx.sheet.size;
+  const double v = ctx.max_deformation_speed() / ctx.sheet.size;
   if (a_ratio) *a_ratio = a;
   if (speed_sizes) *speed_sizes = v;
   return a < ratio && v < speed;

@@ -13,7 +13,8 @@ void apply_common(Stage& stage, const StageArgs& args);
 /// Quiescence as in the integrator's switching test: max|F_i|/m below `ratio` times
 /// a_ref = ks/(m lambda), lambda = sqrt(n/A) the linear node density (paper §3.4).
 /// Overdamped creep has tiny accelerations at finite speed, so quiescence also asks every node
-/// to move slower than `speed` sheet sizes per second.
+/// to move slower than `speed` sheet sizes per second relative to the sheet's best-fit rigid
+/// motion (a free sheet's slow drift or spin is no change of shape).
 /// The two measures are returned through a_ratio and speed_sizes (for the progress line).
 bool quiescent(const StageContext& ctx, double ratio, double speed, double* a_ratio = nullptr,
                double* speed_sizes = nullptr);

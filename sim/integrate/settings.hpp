@@ -54,7 +54,7 @@ struct IntegratorSettings {
   bool plasticity = true;
   double plastic_c0 = 0.1;      ///< yield curvature (19)
   double plastic_gamma = 0.0;   ///< damage-rate constant (19)
-  double plastic_rate = 1.0;    ///< 1/s, time scale of the flow (plasticity.hpp)
+  double plastic_rate = 1e4;    ///< 1/s, time scale of the flow (plasticity.hpp, docs/CONFIG.md)
 };
 
 /// "implicit" / "explicit"; throws InputError listing the valid names otherwise.

@@ -31,7 +31,7 @@ struct TinySheet {
     info.ks = params.ks, info.kb = params.kb, info.mass = params.mass;
     info.spacing = mesh.mean_edge_length();
     settings.plastic_c0 = 0.1;
-    settings.plastic_rate = 50.0;
+    settings.plastic_rate = 1e4;  // the protocols' rate-independent regime (docs/CONFIG.md)
   }
 };
 
@@ -40,11 +40,20 @@ struct MemorySink : RunSink {
   std::vector<std::string> frame_stages;
   std::vector<State> cycles;
   std::vector<Checkpoint> checkpoints;
+  struct StageEnd {
+    int cycle, index;
+    std::string type;
+    State state;
+  };
+  std::vector<StageEnd> stage_ends;
   int kill_after = -1;  ///< throw Killed after this many checkpoints (simulates SIGKILL)
   struct Killed {};
   void frame(const State& s, const std::string& stage, int) override {
     frames.push_back(s);
     frame_stages.push_back(stage);
+  }
+  void stage_end(int cycle, int index, const std::string& type, const State& s) override {
+    stage_ends.push_back({cycle, index, type, s});
   }
   void cycle_end(int, const State& s) override { cycles.push_back(s); }
   void checkpoint(const Checkpoint& c) override {

@@ -1,12 +1,13 @@
 // Every protocol file in protocols/ runs as a smoke test: a tiny sheet for a short simulated
-// time, through the real crumple-sim binary, giving a complete, readable run file
-// (STYLE.md habit 10).
+// time, through the real crumple-sim binary, giving a complete, readable run file.
 #include "sim/io/run_file.hpp"
+#include "tests/support/self_intersection.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 
 namespace fs = std::filesystem;
 using namespace crumple;
@@ -33,4 +34,33 @@ TEST(ProtocolFiles, EveryFileRunsOnATinySheet) {
     EXPECT_NE(r.config.find("stages"), std::string::npos);
   }
   EXPECT_GE(count, 5) << "expected the protocol files of the issue";
+}
+
+// A whole axial-crumpling cycle through the real binary (contact as crumple-sim assembles it),
+// unfolding included: no stored frame has a pair of non-adjacent triangles that intersect, and
+// the run file holds the plastic field at the end of every stage.
+TEST(ProtocolFiles, AxialCycleNeverPassesThroughItself) {
+  const fs::path dir = fs::temp_directory_path() / "crumple_axial_cycle";
+  fs::create_directories(dir);
+  const fs::path out = dir / "cycle.h5";
+  fs::remove(out);
+  const std::string cmd = std::string(CRUMPLE_SIM) + " protocols/axial_crumpling.yaml -o " +
+                          out.string() +
+                          " --quiet --threads 1 --seed 2 --set mesh.nodes=300"
+                          " --set protocol.cycles=1 --set output.dt=0.02";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const RunRecord r = read_run_file(out.string());
+  ASSERT_GT(r.frames.size(), 50u);
+  std::map<std::string, int> checked;
+  for (std::size_t k = 0; k < r.frames.size(); ++k) {
+    const FrameRecord& f = r.frames[k];
+    ++checked[f.stage];
+    EXPECT_EQ(crumple::testing::count_self_intersections(r.mesh, f.state.x), 0u)
+        << "frame " << k << " (" << f.stage << ", t = " << f.state.t << " s)";
+  }
+  for (const char* stage : {"roll", "compress", "release", "unfold"})
+    EXPECT_GT(checked[stage], 2) << stage;
+  ASSERT_EQ(r.stage_ends.size(), 4u);
+  EXPECT_EQ(r.stage_ends[1].stage, "compress");
+  EXPECT_EQ(r.stage_ends[3].p, r.cycles.at(0).p);
 }

@@ -1,6 +1,7 @@
 // Stages and the runner on a tiny sheet: each stage alone does what it promises, one
-// axial-crumpling cycle leaves creases (none before compression), and a run killed at a
-// checkpoint and resumed ends bit for bit where the uninterrupted run ends (one thread).
+// axial-crumpling cycle leaves creases made by the compression (none before it, little after
+// it), the runner reports every stage end, and a run
+// killed at a checkpoint and resumed ends bit for bit where the uninterrupted run ends.
 #include "tests/protocols/runner_fixture.hpp"
 
 #include <gtest/gtest.h>
@@ -21,8 +22,10 @@ struct ProtocolRun {
   State state;
   MemorySink sink;
 
-  ProtocolRun(const std::string& yaml, double c0 = 0.3) {
+  ProtocolRun(const std::string& yaml, double c0 = 0.3,
+              const std::function<void(TinySheet&)>& tweak = {}) {
     sheet.settings.plastic_c0 = c0;
+    if (tweak) tweak(sheet);
     model = std::make_unique<SheetModel>(sheet.mesh, sheet.params);
     integ = std::make_unique<Integrator>(*model, sheet.settings);
     stepper = std::make_unique<IntegratorStepper>(*integ);
@@ -44,8 +47,19 @@ struct ProtocolRun {
   }
 };
 
+/// Total rest length of the hinges with |p| > threshold (the analysis's crease length).
+double crease_length(const Mesh& mesh, const VecX& p, double threshold) {
+  double l = 0;
+  for (Index h = 0; h < p.size(); ++h)
+    if (std::abs(p[h]) > threshold) l += mesh.rest_length[mesh.hinges[h].edge];
+  return l;
+}
+
 const char* kRoll = "[{type: roll, duration: 0.2, axis: fixed, angle: 30}]";
-const char* kCycle = R"([{type: roll, duration: 0.2}, {type: compress, compaction: 0.4, speed: 0.2},
+// The roll radius keeps rolling elastic on this coarse grid (hinge curvature about edge / R
+// below c0 = 0.3); the default radius would bend the 1 cm triangles past yield.
+const char* kCycle = R"([{type: roll, duration: 0.2, radius: 0.03},
+                          {type: compress, compaction: 0.4, speed: 0.2},
                           {type: release}, {type: unfold}])";
 
 }  // namespace
@@ -87,7 +101,7 @@ TEST(Stages, CompressStaysInsideAndReachesTheTarget) {
   EXPECT_GE(wmax - wmin, 0.3 * ap.height);  // the sheet fills the gap: it was compressed
 }
 
-TEST(Stages, UnfoldFlattensAndKeepsPlasticityBelowYield) {
+TEST(Stages, RollAndUnfoldWithoutCompressionMakeNoCrease) {
   ProtocolRun r(R"([{type: roll, duration: 0.2, radius: 0.1}, {type: unfold}])", 0.3);
   // A plastic field inside the yield band of the flat state (|c - p| < c0 throughout).
   std::mt19937_64 rng(3);
@@ -96,17 +110,21 @@ TEST(Stages, UnfoldFlattensAndKeepsPlasticityBelowYield) {
   const VecX p0 = r.state.p;
   r.go();
   const State& s = r.state;
-  double zmax = 0;
-  for (Index i = 0; i < r.model->num_nodes(); ++i) zmax = std::max(zmax, std::abs(s.x[3 * i + 2]));
-  EXPECT_LE(zmax, 2.0 * r.sheet.info.h_eff);
+  // Laid out near flat: within a few sheet thicknesses of the plane, covering the sheet's area.
+  double zmin = 1e9, zmax = -1e9;
+  for (Index i = 0; i < r.model->num_nodes(); ++i)
+    zmin = std::min(zmin, s.x[3 * i + 2]), zmax = std::max(zmax, s.x[3 * i + 2]);
+  EXPECT_LE(zmax - zmin, 4.0 * r.sheet.info.h_eff);
   double projected = 0;
   for (const auto& t : r.model->mesh().triangles) {
     const Vec3 a = node(s.x, t[0]), b = node(s.x, t[1]), c = node(s.x, t[2]);
     projected += 0.5 * std::abs((b - a).cross(c - a).z());
   }
-  EXPECT_GE(projected, 0.9 * r.sheet.info.area);
-  // No flow: p changes only by the round-off of the BDF sum (g = 0 exactly in the yield band).
+  EXPECT_GE(projected, 0.95 * r.sheet.info.area);
+  // No flow: p changes only by the round-off of the BDF sum (g = 0 exactly in the yield band),
+  // so no hinge crosses the crease threshold (half of c0, analysis/README.md) it started below.
   EXPECT_LE((s.p - p0).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT(s.p.cwiseAbs().maxCoeff(), 0.5 * 0.3);
 }
 
 TEST(Stages, OneCycleLeavesCreasesOnlyAfterCompression) {
@@ -142,4 +160,50 @@ TEST(Runner, ResumeFromAnyCheckpointGivesTheUninterruptedResult) {
     EXPECT_EQ((resumed.state.v - whole.state.v).cwiseAbs().maxCoeff(), 0.0);
     EXPECT_EQ((resumed.state.p - whole.state.p).cwiseAbs().maxCoeff(), 0.0);
   }
+}
+
+TEST(Stages, CyclesCreasesAreMadeByTheCompression) {
+  ProtocolRun r(kCycle, 0.3);
+  r.go();
+  ASSERT_EQ(r.sink.stage_ends.size(), 4u);
+  const char* types[] = {"roll", "compress", "release", "unfold"};
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(r.sink.stage_ends[k].cycle, 1);
+    EXPECT_EQ(r.sink.stage_ends[k].index, k);
+    EXPECT_EQ(r.sink.stage_ends[k].type, types[k]);
+  }
+  ASSERT_EQ(r.sink.cycles.size(), 1u);
+  EXPECT_EQ(r.sink.stage_ends[3].state.p, r.sink.cycles[0].p);
+  const Mesh& mesh = r.model->mesh();
+  const double threshold = 0.5 * 0.3;
+  const double after_compress = crease_length(mesh, r.sink.stage_ends[1].state.p, threshold);
+  const double after_release = crease_length(mesh, r.sink.stage_ends[2].state.p, threshold);
+  const double after_unfold = crease_length(mesh, r.sink.stage_ends[3].state.p, threshold);
+  ASSERT_GT(after_compress, 0.0) << "the compression made no crease";
+  // Unfolding a creased sheet adds less than 10 % to its crease length.
+  EXPECT_LT(after_unfold, 1.1 * after_release)
+      << "release " << after_release << ", unfold " << after_unfold;
+  // Most of the cycle's creases were made while the sheet was crushed.
+  EXPECT_LT(after_unfold - after_compress, 0.15 * after_unfold)
+      << "compress " << after_compress << ", cycle end " << after_unfold;
+}
+
+TEST(Stages, ReleaseEndsByQuiescenceWhileTheSheetDrifts) {
+  // A flat, unstressed sheet drifting and spinning slowly as a whole: without drag the drift
+  // never decays, and the integrator is kept explicit so that it is not projected away.
+  ProtocolRun r(R"([{type: release, max_duration: 1.0, min_duration: 0.02}])", 0.3,
+                [](TinySheet& t) {
+                  t.params.b_iso = 0.0;
+                  t.settings.mode_initial = IntegrationMode::Explicit;
+                  t.settings.switch_down = 0.0;
+                });
+  const Vec3 V(0.03, -0.02, 0.01), w(0.0, 0.0, 0.1);
+  const Vec3 centre = r.model->mesh().ref.rowwise().mean();
+  for (Index i = 0; i < r.model->num_nodes(); ++i)
+    node(r.state.v, i) = V + w.cross(node(r.state.x, i) - centre);
+  r.go();
+  EXPECT_LT(r.state.t, 0.1) << "release waited for the rigid drift to stop";
+  double vmax = 0;
+  for (Index i = 0; i < r.model->num_nodes(); ++i) vmax = std::max(vmax, node(r.state.v, i).norm());
+  EXPECT_GT(vmax / r.sheet.info.size, 0.2) << "the drift itself decayed";
 }
