@@ -1,9 +1,10 @@
-// crumple-analyze: crease length, crease maps, facets and fits of one run file (DESIGN.md §8).
+// crumple-analyze: crease length, crease maps, facets and fits of one run file
+// (analysis/README.md).
 //
-//   crumple-analyze RUN.h5 [-o DIR] [--threshold P] [--px-per-cm R] [--min-facet-px A] ...
+//   crumple-analyze RUN.h5 [-o DIR] [--threshold-c0 F | --threshold P] [--px-per-cm R] ...
 //
-// Exit codes (DESIGN.md §10): 0 success, 2 bad input (arguments or run file; nothing is
-// written), 1 anything else.
+// Exit codes: 0 success, 2 bad input (arguments or run file; nothing is written), 1 anything
+// else.
 #include "analysis/io/run_reader.hpp"
 #include "analysis/run/analyze_run.hpp"
 #include "analysis/run/write_results.hpp"
@@ -22,12 +23,19 @@ int main(int argc, char** argv) {
   app.add_option("run", run_path, "run file (RUN.h5) written by crumple-sim")->required();
   app.add_option("-o,--output", out_dir,
                  "output folder (default: the run file's name with .h5 replaced by .analysis)");
-  app.add_option("--threshold", opt.threshold,
-                 "crease when |p| > P, p in curvature units 2 sin(theta/2). The default 0.05 is a "
-                 "rest fold of about 3 degrees: above the plastic noise of a flat sheet, far below "
-                 "a real crease (c ~ 1.4 at 90 degrees)")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  double absolute = 0.0;
+  CLI::Option* by_c0 =
+      app.add_option("--threshold-c0", opt.threshold_c0,
+                     "crease when |p| > F c0, c0 the run's yield curvature (integrator.plastic_c0 "
+                     "in /config): the hinge keeps a permanent set of at least F times the "
+                     "largest bend the sheet takes back elastically")
+          ->capture_default_str()
+          ->check(CLI::PositiveNumber);
+  app.add_option("--threshold", absolute,
+                 "crease when |p| > P, an absolute threshold (p in curvature units "
+                 "2 sin(theta/2)) instead of --threshold-c0")
+      ->check(CLI::PositiveNumber)
+      ->excludes(by_c0);
   app.add_option("--px-per-cm", opt.px_per_cm, "raster resolution of the crease map")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
@@ -53,6 +61,7 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : 2;
   }
   try {
+    if (app.count("--threshold")) opt.threshold = absolute;
     const RunData run = read_run(run_path);
     if (out_dir.empty())
       out_dir = std::filesystem::path(run_path).replace_extension(".analysis").string();
@@ -60,7 +69,7 @@ int main(int argc, char** argv) {
     for (const auto& w : res.warnings) std::cerr << "crumple-analyze: warning: " << w << "\n";
     write_results(out_dir, run, res, opt);
     std::cout << "crumple-analyze: " << res.cycles.size() << " cycles of " << run_path
-              << " analysed into " << out_dir << "\n";
+              << " analysed into " << out_dir << "\n  " << res.threshold_rule.note << "\n";
     for (const auto& c : res.cycles)
       std::cout << "  cycle " << c.cycle << ": crease length " << c.crease_length_m << " m ("
                 << c.crease_length_L0 << " L0), P " << c.perimeter_P << ", facets "
@@ -69,7 +78,12 @@ int main(int argc, char** argv) {
     if (res.fit_length)
       std::cout << "  log law on l/L0: C = " << res.fit_length->C << " +- "
                 << res.fit_length->sigma_C << ", n0 = " << res.fit_length->n0 << " +- "
-                << res.fit_length->sigma_n0 << "\n";
+                << res.fit_length->sigma_n0 << " (cumulative)\n";
+    if (res.fit_length_increments)
+      std::cout << "  log law on the increments of l/L0: C = " << res.fit_length_increments->C
+                << " +- " << res.fit_length_increments->sigma_C
+                << ", n0 = " << res.fit_length_increments->n0 << " +- "
+                << res.fit_length_increments->sigma_n0 << "\n";
     return 0;
   } catch (const InputError& e) {
     std::cerr << "crumple-analyze: bad input: " << e.what() << "\n";

@@ -1,4 +1,4 @@
-// Log-binned density of scaled facet areas xi (statistics.md §3.7 step 4): bin edges r^k with
+// Log-binned density of scaled facet areas xi (docs/STATISTICS.md §3.7 step 4): bin edges r^k with
 // r = 1.55, density = count / (bin width x total count), so it estimates phi(xi) directly.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Facet segmentation of a crease map (DESIGN.md §8, statistics.md §1 "Facet segmentation"):
+// Facet segmentation of a crease map (docs/STATISTICS.md §1 "Facet segmentation"):
 // facets are the regions of the sheet bounded by creases and the sheet border.
 //
 //   1. close small gaps in the crease layer (morphological closing, close_px wide);
@@ -8,7 +8,7 @@
 //      regions touching the sheet border are kept (they are facets bounded by the border);
 //   4. grow the labels over the crease and speck pixels, each taking the label of the nearest
 //      facet pixel (cv::distanceTransform with per-pixel labels), so that the facets tile the
-//      sheet and the crease width does not eat into facet areas (statistics.md §1 step 3 and
+//      sheet and the crease width does not eat into facet areas (docs/STATISTICS.md §1 step 3 and
 //      §3.7 step 2: "creases have zero width").
 #pragma once
 
@@ -45,7 +45,7 @@ struct Segmentation {
 Segmentation segment_facets(const cv::Mat& sheet, const cv::Mat& creases,
                             const SegmentParams& params);
 
-/// Perimeter-based crease length of statistics.md §2.1 in units of `size_px` (L0 in pixels):
+/// Perimeter-based crease length of docs/STATISTICS.md §2.1 in units of `size_px` (L0 in pixels):
 /// P = (sum of facet perimeters - sheet outline) / (2 L0), each interior crease bordering two
 /// facets. Perimeters are contour lengths through pixel centres (diagonal steps count sqrt 2).
 double perimeter_crease_length(const Segmentation& seg, double size_px);

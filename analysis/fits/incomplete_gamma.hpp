@@ -1,6 +1,7 @@
 // Regularized lower incomplete gamma function P(a, x) = gamma(a, x) / Gamma(a), needed for the
 // CDF of the fragmentation-model distribution, F(xi; a) = P(a, sqrt(a(a+1) xi))
-// (statistics.md §3.3). Series for x < a + 1, Lentz continued fraction for Q = 1 - P otherwise.
+// (docs/STATISTICS.md §3.3). Series for x < a + 1, Lentz continued fraction for Q = 1 - P
+// otherwise.
 #pragma once
 
 namespace crumple::analysis {

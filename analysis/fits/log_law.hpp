@@ -1,7 +1,16 @@
-// Fit of the logarithmic crease-length law l(n) = C ln(1 + n / n0) (statistics.md §2.2-2.3) by
-// nonlinear least squares (a two-parameter Levenberg-Marquardt written out with Eigen), with the
-// parameter covariance s^2 (J^T J)^-1 at the optimum, and conversion to the experiment's
+// Fit of the logarithmic crease-length law l(n) = C ln(1 + n / n0) (docs/STATISTICS.md §2.2-2.3)
+// by nonlinear least squares (a two-parameter Levenberg-Marquardt written out with Eigen), with
+// the parameter covariance s^2 (J^T J)^-1 at the optimum, and conversion to the experiment's
 // constants c1 = C / (1 - D), c2 = D / n0 when the compaction ratio D is known.
+//
+// Two fits of the same law. The cumulative fit takes l_n itself; but l_n is the sum of all
+// earlier cycles' increments, so its deviations from the law are correlated from cycle to cycle
+// (a random walk), and the least-squares covariance, which assumes independent residuals,
+// understates the uncertainty of (C, n0) and makes chi^2 look small. The increment fit takes
+// dl_n = l_n - l_(n-1) = C [ln(1 + n/n0) - ln(1 + (n-1)/n0)]: the new creases of different
+// cycles are made by different crumples, so the increments are nearly independent (a per-cycle
+// measurement error, such as the rasterisation of P, still anti-correlates neighbours a little)
+// and its covariance is the honest one (docs/STATISTICS.md §2.3, step 4).
 #pragma once
 
 #include <optional>
@@ -21,6 +30,7 @@ struct LogLawFit {
   bool weighted = false;                ///< true when per-point sigmas were given
   int iterations = 0;
   bool converged = false;
+  std::string model;                    ///< which form was fitted, in words
 };
 
 /// Fits l_i = C ln(1 + n_i / n0) to (n_i, l_i), n_i > 0. With `sigma` (one per point, > 0) the
@@ -29,7 +39,14 @@ struct LogLawFit {
 LogLawFit fit_log_law(const std::vector<double>& n, const std::vector<double>& l,
                       const std::vector<double>& sigma = {});
 
-/// c1 = C/(1-D), c2 = D/n0 with first-order propagated 1-sigma errors (statistics.md §2.3).
+/// Fits dl_i = C [ln(1 + n_i/n0) - ln(1 + m_i/n0)] to increments dl_i between cycles m_i and
+/// n_i (0 <= m_i < n_i; m_i = n_i - 1 for consecutive cycles, m = 0 before the first). Same
+/// covariance rules as fit_log_law; needs N >= 3 increments and some dl_i > 0.
+LogLawFit fit_log_law_increments(const std::vector<double>& n_from,
+                                 const std::vector<double>& n_to, const std::vector<double>& dl,
+                                 const std::vector<double>& sigma = {});
+
+/// c1 = C/(1-D), c2 = D/n0 with first-order propagated 1-sigma errors (docs/STATISTICS.md §2.3).
 struct ExperimentConstants {
   double c1 = 0, sigma_c1 = 0, c2 = 0, sigma_c2 = 0;
 };

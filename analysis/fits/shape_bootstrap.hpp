@@ -1,4 +1,4 @@
-// Resampling uncertainty for the facet-shape fit (statistics.md §3.7, "additional checks"):
+// Resampling uncertainty for the facet-shape fit (docs/STATISTICS.md §3.7, "additional checks"):
 // a nonparametric bootstrap interval for a_fit, and a parametric-bootstrap p-value for the
 // Kolmogorov-Smirnov distance (a is fitted to the same data, so the textbook KS table is wrong).
 #pragma once

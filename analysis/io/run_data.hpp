@@ -30,6 +30,15 @@ struct CycleData {
   std::vector<double> p;  ///< h plastic rest curvatures (2 sin(theta/2) units)
 };
 
+/// The plastic field at the end of one finished protocol stage (/stage_ends/NNNNNN).
+struct StageEndData {
+  int cycle = 0;          ///< cycle the stage belongs to, from 1
+  int stage_index = 0;    ///< 0-based position of the stage in its cycle
+  std::string stage;      ///< stage type: "roll", "compress", "release", "unfold", ...
+  double t = 0.0;         ///< simulation time at the end of the stage
+  std::vector<double> p;  ///< h plastic rest curvatures
+};
+
 struct RunData {
   std::string path;
   nlohmann::json meta = nlohmann::json::object();  ///< /meta attributes (scalars only)
@@ -37,6 +46,8 @@ struct RunData {
   double length_unit_m = 1.0;                      ///< metres per simulation length unit
   MeshData mesh;
   std::vector<CycleData> cycles;  ///< sorted by cycle number, never empty after read_run()
+  std::vector<StageEndData> stage_ends;  ///< in run order; empty in files without /stage_ends
+  bool has_stage_ends = false;           ///< the file has a /stage_ends group
   std::vector<std::string> warnings;  ///< non-fatal problems found while reading
 };
 

@@ -1,7 +1,9 @@
-// HDF5 reading of a run file; see run_reader.hpp. Every dataset is read through the native
-// memory type the analysis uses (HDF5 converts stored widths), after its rank and extents are
-// checked against the mesh sizes.
+// HDF5 reading of a run file; see run_reader.hpp. Every dataset is read through the
+// shape-checked helpers of io/h5_checked.hpp, against the mesh sizes.
 #include "analysis/io/run_reader.hpp"
+
+#include "analysis/io/h5_checked.hpp"
+#include "analysis/io/stage_ends_reader.hpp"
 
 #include <H5Cpp.h>
 
@@ -10,64 +12,6 @@
 
 namespace crumple::analysis {
 namespace {
-
-class Reader {
- public:
-  explicit Reader(std::string path) : path_(std::move(path)) {}
-
-  [[noreturn]] void fail(const std::string& what) const {
-    throw InputError(path_ + ": " + what);
-  }
-
-  /// Extents of dataset `name` in `g`, or fail naming it.
-  std::vector<hsize_t> dims(const H5::Group& g, const std::string& where,
-                            const std::string& name) const {
-    if (!g.nameExists(name)) fail("missing dataset " + where + "/" + name);
-    H5::DataSet ds = g.openDataSet(name);
-    H5::DataSpace sp = ds.getSpace();
-    std::vector<hsize_t> d(static_cast<std::size_t>(sp.getSimpleExtentNdims()));
-    sp.getSimpleExtentDims(d.data());
-    return d;
-  }
-
-  /// Reads a dataset of shape (rows) when cols == 0, else (rows, cols); checks the shape.
-  template <class T>
-  std::vector<T> read(const H5::Group& g, const std::string& where, const std::string& name,
-                      const H5::PredType& type, hsize_t rows, hsize_t cols) const {
-    const auto d = dims(g, where, name);
-    const bool ok = cols == 0 ? (d.size() == 1 && d[0] == rows)
-                              : (d.size() == 2 && d[0] == rows && d[1] == cols);
-    if (!ok) {
-      std::string got;
-      for (auto v : d) got += (got.empty() ? "" : ", ") + std::to_string(v);
-      fail(where + "/" + name + " has shape (" + got + "), expected (" + std::to_string(rows) +
-           (cols ? ", " + std::to_string(cols) : std::string()) + ")");
-    }
-    std::vector<T> out(static_cast<std::size_t>(rows * std::max<hsize_t>(cols, 1)));
-    if (!out.empty()) g.openDataSet(name).read(out.data(), type);
-    return out;
-  }
-
-  /// Row count of a 2-D dataset with a fixed column count (the count that defines a size).
-  hsize_t rows(const H5::Group& g, const std::string& where, const std::string& name,
-               hsize_t cols) const {
-    const auto d = dims(g, where, name);
-    if (d.size() != 2 || d[1] != cols)
-      fail(where + "/" + name + " must be 2-D with " + std::to_string(cols) + " columns");
-    return d[0];
-  }
-
- private:
-  std::string path_;
-};
-
-template <std::size_t K, class T>
-std::vector<std::array<T, K>> as_rows(const std::vector<T>& flat) {
-  std::vector<std::array<T, K>> out(flat.size() / K);
-  for (std::size_t i = 0; i < out.size(); ++i)
-    std::copy_n(flat.begin() + static_cast<std::ptrdiff_t>(K * i), K, out[i].begin());
-  return out;
-}
 
 /// Scalar attributes of /meta as JSON values; arrays and odd types are skipped.
 nlohmann::json read_attributes(const H5::Group& g) {
@@ -101,18 +45,11 @@ nlohmann::json read_attributes(const H5::Group& g) {
   return out;
 }
 
-/// Cycle groups are named by their number ("0001"); anything else under /cycles is ignored.
-bool parse_cycle_name(const std::string& name, int& cycle) {
-  if (name.empty() || !std::all_of(name.begin(), name.end(), ::isdigit)) return false;
-  cycle = std::stoi(name);
-  return true;
-}
-
 }  // namespace
 
 RunData read_run(const std::string& path) {
   H5::Exception::dontPrint();
-  Reader r(path);
+  const h5::Reader r(path);
   if (!std::filesystem::is_regular_file(path)) r.fail("no such file");
   try {
     if (!H5::H5File::isHdf5(path)) r.fail("not an HDF5 file");
@@ -136,7 +73,7 @@ RunData read_run(const std::string& path) {
       if (ds.getTypeClass() == H5T_STRING) ds.read(run.config_yaml, ds.getStrType());
       run.config_yaml = run.config_yaml.c_str();
     } else {
-      run.warnings.push_back("no /config dataset; compaction unknown");
+      run.warnings.push_back("no /config dataset; compaction and yield curvature c0 unknown");
     }
 
     if (!file.nameExists("mesh")) r.fail("missing group /mesh");
@@ -148,11 +85,11 @@ RunData read_run(const std::string& path) {
     const hsize_t t = r.rows(mg, "/mesh", "triangles", 3);
     const hsize_t e = r.rows(mg, "/mesh", "edges", 2);
     const hsize_t h = r.rows(mg, "/mesh", "hinges", 4);
-    m.ref_positions = as_rows<3>(r.read<double>(mg, "/mesh", "ref_positions", D, n, 3));
-    m.triangles = as_rows<3>(r.read<std::int32_t>(mg, "/mesh", "triangles", I, t, 3));
-    m.edges = as_rows<2>(r.read<std::int32_t>(mg, "/mesh", "edges", I, e, 2));
+    m.ref_positions = h5::as_rows<3>(r.read<double>(mg, "/mesh", "ref_positions", D, n, 3));
+    m.triangles = h5::as_rows<3>(r.read<std::int32_t>(mg, "/mesh", "triangles", I, t, 3));
+    m.edges = h5::as_rows<2>(r.read<std::int32_t>(mg, "/mesh", "edges", I, e, 2));
     m.rest_lengths = r.read<double>(mg, "/mesh", "rest_lengths", D, e, 0);
-    m.hinges = as_rows<4>(r.read<std::int32_t>(mg, "/mesh", "hinges", I, h, 4));
+    m.hinges = h5::as_rows<4>(r.read<std::int32_t>(mg, "/mesh", "hinges", I, h, 4));
     m.hinge_edge = r.read<std::int32_t>(mg, "/mesh", "hinge_edge", I, h, 0);
     m.boundary = r.read<std::uint8_t>(mg, "/mesh", "boundary", H5::PredType::NATIVE_UINT8, n, 0);
     if (n < 3 || t < 1) r.fail("/mesh has no triangles");
@@ -170,7 +107,7 @@ RunData read_run(const std::string& path) {
     for (hsize_t i = 0; i < cg.getNumObjs(); ++i) {
       const std::string name = cg.getObjnameByIdx(i);
       CycleData c;
-      if (cg.getObjTypeByIdx(i) != H5G_GROUP || !parse_cycle_name(name, c.cycle)) continue;
+      if (cg.getObjTypeByIdx(i) != H5G_GROUP || !h5::parse_counter(name, c.cycle)) continue;
       H5::Group g = cg.openGroup(name);
       const std::string where = "/cycles/" + name;
       c.p = r.read<double>(g, where, "p", D, h, 0);
@@ -181,6 +118,7 @@ RunData read_run(const std::string& path) {
     if (run.cycles.empty()) r.fail("/cycles holds no cycle groups (no completed cycles)");
     std::sort(run.cycles.begin(), run.cycles.end(),
               [](const CycleData& a, const CycleData& b) { return a.cycle < b.cycle; });
+    read_stage_ends(file, r, h, run);
   } catch (const H5::Exception& ex) {
     r.fail("HDF5 error: " + ex.getDetailMsg());
   }

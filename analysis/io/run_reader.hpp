@@ -1,4 +1,5 @@
-// Thin HDF5 reader of a run file (docs/FILE_FORMAT.md): /meta, /config, /mesh and /cycles.
+// Thin HDF5 reader of a run file (docs/FILE_FORMAT.md): /meta, /config, /mesh, /cycles and the
+// optional /stage_ends.
 //
 // It checks every shape it relies on and throws InputError naming the file and the missing or
 // malformed object, so the caller can exit with code 2 before writing anything.
@@ -16,8 +17,8 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Reads and validates the run file at `path`. /meta and /config are optional (a warning is
-/// recorded when absent); /mesh and at least one /cycles/NNNN group are required.
+/// Reads and validates the run file at `path`. /meta, /config and /stage_ends are optional (a
+/// warning is recorded when absent); /mesh and at least one /cycles/NNNN group are required.
 RunData read_run(const std::string& path);
 
 }  // namespace crumple::analysis

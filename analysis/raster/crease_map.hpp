@@ -1,4 +1,4 @@
-// Rasterisation of the sheet and its creases in the flat reference frame (DESIGN.md §8): the
+// Rasterisation of the sheet and its creases in the flat reference frame: the
 // sheet mask (all reference triangles filled), the crease layer (crease edges as lines) and the
 // colour crease map written as crease_NNNN.png. Drawing uses OpenCV with sub-pixel endpoints.
 #pragma once

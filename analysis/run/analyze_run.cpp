@@ -3,13 +3,19 @@
 
 #include "analysis/fits/facet_shape.hpp"
 #include "analysis/fits/shape_bootstrap.hpp"
+#include "analysis/io/run_reader.hpp"
 #include "analysis/raster/crease_map.hpp"
 #include "analysis/raster/raster_frame.hpp"
 #include "analysis/run/config_params.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
+#include <set>
+#include <sstream>
+#include <stdexcept>
 
 namespace crumple::analysis {
 namespace {
@@ -36,6 +42,86 @@ ShapeStats shape_stats(const std::vector<double>& x, const AnalyzeOptions& opt,
   return s;
 }
 
+/// The threshold rule of the options for this run's c0 (from /config, else the default).
+ThresholdRule resolve_threshold(const RunData& run, const AnalyzeOptions& opt,
+                                std::vector<std::string>& warnings) {
+  const std::optional<double> c0_cfg = plastic_c0_from_config(run.config_yaml);
+  const double c0 = c0_cfg.value_or(kDefaultPlasticC0);
+  if (!c0_cfg) {
+    std::ostringstream w;
+    w << "/config gives no integrator.plastic_c0; assuming the simulator default c0 = "
+      << kDefaultPlasticC0 << " for the crease threshold";
+    warnings.push_back(w.str());
+  }
+  try {
+    return opt.threshold ? absolute_threshold(*opt.threshold, c0, c0_cfg.has_value())
+                         : threshold_from_c0(opt.threshold_c0, c0, c0_cfg.has_value());
+  } catch (const std::invalid_argument& e) {
+    throw InputError(run.path + ": " + e.what());
+  }
+}
+
+/// Stage ends grouped by cycle, in run order; warns about stage ends of unfinished cycles.
+std::map<int, std::vector<const StageEndData*>> stages_by_cycle(
+    const RunData& run, std::vector<std::string>& warnings) {
+  std::map<int, std::vector<const StageEndData*>> out;
+  std::set<int> completed;
+  for (const auto& c : run.cycles) completed.insert(c.cycle);
+  std::set<int> orphans;
+  for (const auto& s : run.stage_ends) {
+    if (completed.count(s.cycle))
+      out[s.cycle].push_back(&s);
+    else
+      orphans.insert(s.cycle);
+  }
+  for (int c : orphans)
+    warnings.push_back("/stage_ends has stages of cycle " + std::to_string(c) +
+                       ", which did not complete; they are not reported");
+  if (run.has_stage_ends)
+    for (int c : completed)
+      if (!out.count(c))
+        warnings.push_back("/stage_ends has no stage of cycle " + std::to_string(c));
+  return out;
+}
+
+/// Per-stage accounting of one cycle into r, lengths in L0.
+void add_stages(CycleResult& r, const MeshData& mesh, double L0,
+                const std::vector<const StageEndData*>& stages, const std::vector<char>& now,
+                const std::vector<char>& before, double threshold,
+                std::vector<std::string>& warnings) {
+  r.stages = account_stages(mesh, stages, now, before, threshold);
+  double sum = 0.0;
+  for (auto& s : r.stages) {
+    s.crease_length /= L0;
+    s.new_length /= L0;
+    s.lost_length /= L0;
+    sum += s.new_length;
+  }
+  r.new_length_share_after_compress =
+      share_after_last(r.stages, "compress", r.new_crease_length_L0);
+  if (!r.stages.empty() && std::abs(sum - r.new_crease_length_L0) > 1e-9 * (1 + sum))
+    warnings.push_back("cycle " + std::to_string(r.cycle) + ": the stages' new crease lengths add "
+                       "up to " + std::to_string(sum) + " L0, not the cycle's " +
+                       std::to_string(r.new_crease_length_L0) +
+                       " L0 (the last stage end is not the cycle end)");
+}
+
+/// Both fits of the log law to y against the cycle numbers n (cumulative and increments).
+void fit_law(const std::vector<double>& n, const std::vector<double>& y,
+             std::optional<LogLawFit>& cumulative, std::optional<LogLawFit>& increments) {
+  if (std::none_of(y.begin(), y.end(), [](double v) { return v > 0; })) return;
+  cumulative = fit_log_law(n, y);
+  // y_0 = 0: before the first cycle the sheet is flat and has no creases.
+  std::vector<double> from, to, dy;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    from.push_back(i == 0 ? 0.0 : n[i - 1]);
+    to.push_back(n[i]);
+    dy.push_back(y[i] - (i == 0 ? 0.0 : y[i - 1]));
+  }
+  if (std::any_of(dy.begin(), dy.end(), [](double v) { return v > 0; }))
+    increments = fit_log_law_increments(from, to, dy);
+}
+
 }  // namespace
 
 RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt) {
@@ -46,12 +132,21 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt) {
   out.area_m2 = sheet_area(mesh) * unit * unit;
   out.compaction = compaction_from_config(run.config_yaml);
   out.warnings = run.warnings;
+  out.threshold_rule = resolve_threshold(run, opt, out.warnings);
+  const double threshold = out.threshold_rule.threshold;
 
   const double px_per_unit = opt.px_per_cm * 100.0 * unit;
-  const RasterFrame frame = make_frame(mesh, px_per_unit);
+  MeasureContext ctx;
+  ctx.mesh = &mesh;
+  ctx.frame = make_frame(mesh, px_per_unit);
+  ctx.sheet = sheet_mask(mesh, ctx.frame);
+  ctx.L0 = sheet_size(mesh);
+  ctx.L0_px = ctx.L0 * px_per_unit;
+  ctx.segment = opt.segment;
+  ctx.crease_px = opt.crease_px;
   out.px_per_m = opt.px_per_cm * 100.0;
-  out.image_width = frame.width;
-  out.image_height = frame.height;
+  out.image_width = ctx.frame.width;
+  out.image_height = ctx.frame.height;
   out.mean_triangle_area_m2 = mean_triangle_area(mesh) * unit * unit;
   out.pixel_floor_m2 = opt.segment.min_facet_px / (out.px_per_m * out.px_per_m);
   out.smallest_resolvable_m2 = std::max(out.mean_triangle_area_m2, out.pixel_floor_m2);
@@ -62,28 +157,30 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt) {
     out.warnings.push_back("mean mesh edge is only " + std::to_string(edge_px) +
                            " px: raise --px-per-cm so the smallest facets are resolved");
 
-  const cv::Mat sheet = sheet_mask(mesh, frame);
-  const double L0_px = sheet_size(mesh) * px_per_unit;
+  const auto stage_ends = stages_by_cycle(run, out.warnings);
   std::vector<char> previous;
   for (const CycleData& c : run.cycles) {
     CycleResult r;
     r.cycle = c.cycle;
-    const auto creased = crease_hinges(c.p, opt.threshold);
-    const auto fresh = new_creases(creased, previous);
-    previous = creased;
-    for (char f : creased) r.crease_edges += f;
+    CreaseMeasure m = measure_creases(ctx, c.p, threshold);
+    const auto fresh = new_creases(m.creased, previous);
+    r.crease_edges = m.crease_edges;
     for (char f : fresh) r.new_crease_edges += f;
-    r.crease_length_m = crease_length(mesh, creased) * unit;
+    r.crease_length_m = m.length * unit;
     r.new_crease_length_m = crease_length(mesh, fresh) * unit;
     r.crease_length_L0 = r.crease_length_m / out.L0_m;
     r.new_crease_length_L0 = r.new_crease_length_m / out.L0_m;
+    const auto st = stage_ends.find(c.cycle);
+    if (st != stage_ends.end())
+      add_stages(r, mesh, ctx.L0, st->second, m.creased, previous, threshold, out.warnings);
+    previous = m.creased;
 
-    const Segmentation seg =
-        segment_facets(sheet, crease_layer(mesh, creased, frame, opt.crease_px), opt.segment);
+    const Segmentation& seg = m.seg;
     r.sheet_px = seg.sheet_px;
     r.crease_px = seg.crease_px;
     r.speck_px = seg.speck_px;
-    r.perimeter_P = perimeter_crease_length(seg, L0_px);
+    r.perimeter_P = m.perimeter_P;
+    if (r.crease_length_L0 > 0) r.dangling_fraction = 1.0 - r.perimeter_P / r.crease_length_L0;
     // Areas as fractions of the sheet's pixels, then in m^2 through the exact triangle area,
     // so the rasterisation of the outline does not bias the physical areas.
     std::vector<double> x;
@@ -94,9 +191,12 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt) {
       fr.area_m2 = fr.x * out.area_m2;
       fr.touches_border = f.touches_border;
       x.push_back(fr.x);
+      r.n_single_triangle_facets += fr.area_m2 < 1.5 * out.mean_triangle_area_m2;
       r.facets.push_back(fr);
     }
     if (!x.empty()) {
+      r.single_triangle_fraction =
+          static_cast<double>(r.n_single_triangle_facets) / static_cast<double>(x.size());
       const auto xi = scaled_areas(x);
       for (std::size_t i = 0; i < xi.size(); ++i) r.facets[i].xi = xi[i];
       r.mean_x = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
@@ -104,10 +204,11 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt) {
       r.distribution = log_binned_density(xi);
     }
     if (x.size() >= 2) r.shape = shape_stats(x, opt, opt.seed + static_cast<std::uint64_t>(c.cycle));
-    r.crease_image = crease_map_image(mesh, c.p, creased, frame, std::max(opt.crease_px, 1));
+    r.crease_image = crease_map_image(mesh, c.p, m.creased, ctx.frame, std::max(opt.crease_px, 1));
     r.facet_image = facet_image(seg);
     out.cycles.push_back(std::move(r));
   }
+  out.sensitivity = threshold_sensitivity(ctx, run.cycles, out.threshold_rule.c0);
 
   std::vector<double> n, l, P;
   for (const auto& r : out.cycles) {
@@ -115,16 +216,11 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt) {
     l.push_back(r.crease_length_L0);
     P.push_back(r.perimeter_P);
   }
-  auto positive = [](const std::vector<double>& v) {
-    for (double e : v)
-      if (e > 0) return true;
-    return false;
-  };
-  if (n.size() < 3)
+  if (n.size() < 3) {
     out.fit_note = "log-law fit needs at least 3 cycles, the run has " + std::to_string(n.size());
-  else {
-    if (positive(l)) out.fit_length = fit_log_law(n, l);
-    if (positive(P)) out.fit_P = fit_log_law(n, P);
+  } else {
+    fit_law(n, l, out.fit_length, out.fit_length_increments);
+    fit_law(n, P, out.fit_P, out.fit_P_increments);
     if (!out.fit_length) out.fit_note = "no creases above the threshold in any cycle";
   }
   return out;

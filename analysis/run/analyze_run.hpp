@@ -1,14 +1,20 @@
-// The whole per-run analysis of crumple-analyze (DESIGN.md §8), in memory: for each cycle the
-// crease length (plastic-edge length and the perimeter-based P of statistics.md §2.1), the crease
-// map, the facets and their scaled-area statistics (statistics.md §3.7), and over the cycles the
-// fit of the logarithmic law (statistics.md §2.3). Nothing is written here (run/write_results).
+// The whole per-run analysis of crumple-analyze, in memory: for each cycle the crease length
+// (plastic-edge length and the perimeter-based P of docs/STATISTICS.md §2.1) with its dangling
+// part, the per-stage accounting of the new creases (creases/stage_accounting.hpp), the crease
+// map, the facets and their scaled-area statistics (docs/STATISTICS.md §3.7); over the cycles
+// the fits of the logarithmic law to the cumulative values and to the per-cycle increments
+// (docs/STATISTICS.md §2.3) and the threshold sensitivity table. The crease threshold follows
+// creases/threshold_rule.hpp. Nothing is written here (run/write_results).
 #pragma once
 
 #include "analysis/creases/crease_edges.hpp"
+#include "analysis/creases/stage_accounting.hpp"
+#include "analysis/creases/threshold_rule.hpp"
 #include "analysis/facets/area_distribution.hpp"
 #include "analysis/facets/segment.hpp"
 #include "analysis/fits/log_law.hpp"
 #include "analysis/io/run_data.hpp"
+#include "analysis/run/threshold_sensitivity.hpp"
 
 #include <opencv2/core.hpp>
 
@@ -20,12 +26,14 @@
 namespace crumple::analysis {
 
 struct AnalyzeOptions {
-  double threshold = kDefaultCreaseThreshold;  ///< crease when |p| > threshold
-  double px_per_cm = 40.0;                     ///< raster resolution
-  SegmentParams segment;                       ///< closing size, minimum facet pixels
-  int crease_px = 1;                           ///< crease line width in pixels
-  int bootstrap = 200;                         ///< resamples for the a interval and KS p-value
-  std::uint64_t seed = 1;                      ///< seed of the resampling
+  /// Absolute crease threshold (--threshold); when absent the threshold is threshold_c0 x c0.
+  std::optional<double> threshold;
+  double threshold_c0 = kDefaultThresholdFactor;  ///< F in crease when |p| > F c0
+  double px_per_cm = 40.0;                        ///< raster resolution
+  SegmentParams segment;                          ///< closing size, minimum facet pixels
+  int crease_px = 1;                              ///< crease line width in pixels
+  int bootstrap = 200;                            ///< resamples for the a interval and KS p-value
+  std::uint64_t seed = 1;                         ///< seed of the resampling
 };
 
 struct FacetRecord {
@@ -34,7 +42,7 @@ struct FacetRecord {
   bool touches_border = false;
 };
 
-/// Shape statistics of one cycle's facets (statistics.md §3.3-3.4, §3.7).
+/// Shape statistics of one cycle's facets (docs/STATISTICS.md §3.3-3.4, §3.7).
 struct ShapeStats {
   double a_fit = 0, a_fit_lo = 0, a_fit_hi = 0;  ///< MLE and its bootstrap 95 % interval
   double a_moment = 0;                           ///< NaN when the variance vanishes
@@ -48,8 +56,18 @@ struct CycleResult {
   long crease_edges = 0, new_crease_edges = 0;
   double crease_length_m = 0, crease_length_L0 = 0;
   double new_crease_length_m = 0, new_crease_length_L0 = 0;
-  double perimeter_P = 0;  ///< statistics.md §2.1, in L0
+  double perimeter_P = 0;  ///< docs/STATISTICS.md §2.1, in L0
+  /// 1 - P / (l/L0): the share of the plastic-edge length that separates no two facets (crease
+  /// segments ending inside a facet); nullopt when l = 0. Slightly negative values are pixel
+  /// error of P on a network without dangling ends.
+  std::optional<double> dangling_fraction;
+  std::vector<StageCreases> stages;  ///< per stage end of the cycle, lengths in L0
+  std::optional<double> new_length_share_after_compress;  ///< see share_after_last()
   std::vector<FacetRecord> facets;
+  /// Facets smaller than 1.5 mean mesh triangles, i.e. not larger than one triangle: at the
+  /// mesh's resolution floor (docs/STATISTICS.md §3.7, resolution floor).
+  long n_single_triangle_facets = 0;
+  std::optional<double> single_triangle_fraction;  ///< of n_facets; nullopt without facets
   double mean_x = 0, mean_area_m2 = 0;
   long sheet_px = 0, crease_px = 0, speck_px = 0;
   std::optional<ShapeStats> shape;  ///< absent with fewer than 2 facets
@@ -65,11 +83,18 @@ struct RunAnalysis {
   double smallest_resolvable_m2 = 0; ///< the larger of the two floors
   std::optional<double> compaction;
   std::vector<CycleResult> cycles;
-  std::optional<LogLawFit> fit_length, fit_P;  ///< on l/L0 and on P against n
-  std::string fit_note;                        ///< why a fit is missing, if it is
+  ThresholdRule threshold_rule;  ///< the threshold used and how it was derived
+  ThresholdSensitivity sensitivity;
+  std::optional<LogLawFit> fit_length, fit_P;  ///< cumulative l/L0 and P against n
+  /// The same law fitted to the per-cycle increments of l/L0 and of P (fits/log_law.hpp says
+  /// why this fit's uncertainties are the ones to quote).
+  std::optional<LogLawFit> fit_length_increments, fit_P_increments;
+  std::string fit_note;  ///< why a fit is missing, if it is
   std::vector<std::string> warnings;
 };
 
+/// Throws InputError (io/run_reader.hpp) when no threshold can be derived (c0 = 0 without
+/// --threshold).
 RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt);
 
 }  // namespace crumple::analysis

@@ -20,4 +20,16 @@ std::optional<double> compaction_from_config(const std::string& yaml_text) {
   return std::nullopt;
 }
 
+std::optional<double> plastic_c0_from_config(const std::string& yaml_text) {
+  if (yaml_text.empty()) return std::nullopt;
+  try {
+    const YAML::Node root = YAML::Load(yaml_text);
+    const YAML::Node c0 = root["integrator"]["plastic_c0"];
+    if (c0 && c0.IsScalar()) return c0.as<double>();
+  } catch (const YAML::Exception&) {
+    // Unreadable: the caller falls back to the default and says so in a warning.
+  }
+  return std::nullopt;
+}
+
 }  // namespace crumple::analysis

@@ -3,6 +3,7 @@
 
 #include "analysis/facets/area_distribution.hpp"
 #include "analysis/fits/facet_shape.hpp"
+#include "analysis/run/write_tables.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -21,7 +22,7 @@ nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlo
 
 nlohmann::json fit_json(const std::optional<LogLawFit>& f, const std::optional<double>& D) {
   if (!f) return nullptr;
-  nlohmann::json j = {{"model", "l = C ln(1 + n/n0)"},
+  nlohmann::json j = {{"model", f->model},
                       {"C", num(f->C)},
                       {"sigma_C", num(f->sigma_C)},
                       {"n0", num(f->n0)},
@@ -39,7 +40,7 @@ nlohmann::json fit_json(const std::optional<LogLawFit>& f, const std::optional<d
     j["sigma_c1"] = num(k.sigma_c1);
     j["c2"] = num(k.c2);
     j["sigma_c2"] = num(k.sigma_c2);
-    j["n0_experiment"] = 10.0 * *D;  // n0 = D / c2 with c2 = 0.1 (statistics.md §2.2)
+    j["n0_experiment"] = 10.0 * *D;  // n0 = D / c2 with c2 = 0.1 (docs/STATISTICS.md §2.2)
   }
   return j;
 }
@@ -48,6 +49,15 @@ std::string cycle_tag(int cycle) {
   char buf[16];
   std::snprintf(buf, sizeof buf, "%04d", cycle);
   return buf;
+}
+
+/// An optional CSV value: empty where stats.json has null.
+struct Cell {
+  const std::optional<double>& v;
+};
+std::ostream& operator<<(std::ostream& o, const Cell& c) {
+  if (c.v && std::isfinite(*c.v)) o << *c.v;
+  return o;
 }
 
 std::ofstream open_out(const std::filesystem::path& p) {
@@ -68,8 +78,9 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
                 {"n_cycles", run.cycles.size()}};
   j["warnings"] = res.warnings;
   j["parameters"] = {
-      {"threshold", opt.threshold},
-      {"threshold_note", "crease when |p| > threshold, p in curvature units 2 sin(theta/2)"},
+      {"threshold", res.threshold_rule.threshold},
+      {"threshold_rule", threshold_rule_json(res.threshold_rule)},
+      {"threshold_note", res.threshold_rule.note},
       {"px_per_cm", opt.px_per_cm},
       {"crease_px", opt.crease_px},
       {"close_px", opt.segment.close_px},
@@ -100,7 +111,13 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
                          {"new_crease_length_m", c.new_crease_length_m},
                          {"new_crease_length_L0", c.new_crease_length_L0},
                          {"perimeter_P", c.perimeter_P},
+                         {"dangling_fraction", json_or_null(c.dangling_fraction)},
+                         {"stages", stages_json(c)},
+                         {"new_length_share_after_compress",
+                          json_or_null(c.new_length_share_after_compress)},
                          {"n_facets", c.facets.size()},
+                         {"n_single_triangle_facets", c.n_single_triangle_facets},
+                         {"single_triangle_fraction", json_or_null(c.single_triangle_fraction)},
                          {"n_border_facets", std::count_if(c.facets.begin(), c.facets.end(),
                                                            [](auto& f) { return f.touches_border; })},
                          {"mean_area_x", c.mean_x},
@@ -124,9 +141,13 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
     }
     j["cycles"].push_back(cj);
   }
-  j["log_fit"] = {{"crease_length_L0", fit_json(res.fit_length, res.compaction)},
-                  {"perimeter_P", fit_json(res.fit_P, res.compaction)},
-                  {"note", res.fit_note}};
+  j["threshold_sensitivity"] = sensitivity_json(res.sensitivity);
+  j["log_fit"] = {
+      {"crease_length_L0", fit_json(res.fit_length, res.compaction)},
+      {"perimeter_P", fit_json(res.fit_P, res.compaction)},
+      {"crease_length_L0_increments", fit_json(res.fit_length_increments, res.compaction)},
+      {"perimeter_P_increments", fit_json(res.fit_P_increments, res.compaction)},
+      {"note", res.fit_note}};
   return j;
 }
 
@@ -139,7 +160,8 @@ void write_results(const std::string& dir_s, const RunData& run, const RunAnalys
   auto cyc = open_out(dir / "cycles.csv");
   cyc << "cycle,crease_edges,crease_length_m,crease_length_L0,new_crease_length_m,perimeter_P,"
          "n_facets,mean_area_m2,mean_area_x,a_fit,a_fit_lo,a_fit_hi,a_moment,a_univ,ks_distance,"
-         "ks_pvalue\n";
+         "ks_pvalue,new_crease_length_L0,dangling_fraction,n_single_triangle_facets,"
+         "single_triangle_fraction,new_length_share_after_compress\n";
   auto fac = open_out(dir / "facets.csv");
   fac << "cycle,facet_id,area_m2,x,xi,touches_border\n";
   auto dis = open_out(dir / "distribution.csv");
@@ -154,7 +176,9 @@ void write_results(const std::string& dir_s, const RunData& run, const RunAnalys
           << c.shape->ks_p;
     else
       cyc << ",,,,,,,";
-    cyc << '\n';
+    cyc << ',' << c.new_crease_length_L0 << ',' << Cell{c.dangling_fraction} << ','
+        << c.n_single_triangle_facets << ',' << Cell{c.single_triangle_fraction} << ','
+        << Cell{c.new_length_share_after_compress} << '\n';
     for (const auto& f : c.facets)
       fac << c.cycle << ',' << f.id << ',' << f.area_m2 << ',' << f.x << ',' << f.xi << ','
           << (f.touches_border ? 1 : 0) << '\n';
@@ -165,7 +189,12 @@ void write_results(const std::string& dir_s, const RunData& run, const RunAnalys
         !cv::imwrite((dir / ("facets_" + tag + ".png")).string(), c.facet_image))
       throw std::runtime_error("cannot write PNGs into " + dir.string());
   }
-  if (!cyc || !fac || !dis) throw std::runtime_error("error writing CSV files into " + dir.string());
+  auto stg = open_out(dir / "stages.csv");
+  write_stages_csv(stg, res);
+  auto sen = open_out(dir / "sensitivity.csv");
+  write_sensitivity_csv(sen, res.sensitivity);
+  if (!cyc || !fac || !dis || !stg || !sen)
+    throw std::runtime_error("error writing CSV files into " + dir.string());
 }
 
 }  // namespace crumple::analysis

@@ -1,5 +1,6 @@
-// Writes a RunAnalysis into an output folder: stats.json, cycles.csv, facets.csv,
-// distribution.csv, crease_NNNN.png and facets_NNNN.png (the outputs of crumple-analyze).
+// Writes a RunAnalysis into an output folder: stats.json, cycles.csv, stages.csv,
+// sensitivity.csv, facets.csv, distribution.csv, crease_NNNN.png and facets_NNNN.png (the
+// outputs of crumple-analyze).
 #pragma once
 
 #include "analysis/io/run_data.hpp"

@@ -5,7 +5,14 @@ gains, each cycle, a number of random crease segments along mesh-edge lines (x =
 y = const, y - x = const) proportional to C/(n + n0), so the crease length grows roughly like
 C ln(1 + n/n0).
 
+With --stage-ends it also writes /stage_ends (the plastic field at the end of each of the
+stages roll, compress, release, unfold of every cycle): each new crease segment of a cycle is
+made in one of those stages (mostly in compress), so the last stage end of a cycle equals the
+cycle's field. --c0 writes integrator.plastic_c0 into /config (absent otherwise, as in files
+whose config does not give it). The cycle fields do not depend on either flag.
+
 usage: make_synthetic_run.py OUT.h5 [--seed S] [--cycles N] [--k K] [--compaction D]
+                             [--c0 C0] [--stage-ends]
 """
 import argparse
 
@@ -48,8 +55,13 @@ def main():
     ap.add_argument("--cycles", type=int, default=5)
     ap.add_argument("--k", type=int, default=48)
     ap.add_argument("--compaction", type=float, default=0.27)
+    ap.add_argument("--c0", type=float, default=None, help="integrator.plastic_c0 in /config")
+    ap.add_argument("--stage-ends", action="store_true", help="write /stage_ends")
     a = ap.parse_args()
     rng = np.random.default_rng(a.seed)
+    stage_rng = np.random.default_rng(a.seed + 1000)  # keeps the cycle fields flag-independent
+    stages = ["roll", "compress", "release", "unfold"]
+    stage_share = [0.05, 0.8, 0.1, 0.05]
     side, k = 0.1, a.k
     pos, tris, edges, rest, hinges, hedge, boundary = grid_mesh(k, side)
     # integer grid coordinates of each hinge's edge ends
@@ -61,15 +73,21 @@ def main():
         m.attrs["length_unit_m"] = 1.0
         m.attrs["seed"] = np.uint64(a.seed)
         m.attrs["program_version"] = "synthetic"
-        f["config"] = (f"mesh:\n  shape: square\n  size: {side}\nprotocol:\n  cycles: {a.cycles}\n"
-                       f"  stages:\n    - type: roll\n    - type: compress\n      compaction: {a.compaction}\n")
+        integrator = f"integrator:\n  plastic_c0: {a.c0}\n" if a.c0 is not None else ""
+        f["config"] = (f"mesh:\n  shape: square\n  size: {side}\n{integrator}protocol:\n"
+                       f"  cycles: {a.cycles}\n  stages:\n    - type: roll\n"
+                       f"    - type: compress\n      compaction: {a.compaction}\n"
+                       f"    - type: release\n    - type: unfold\n")
         g = f.create_group("mesh")
         g["ref_positions"], g["triangles"] = pos, tris.astype(np.int32)
         g["edges"], g["rest_lengths"] = edges.astype(np.int32), rest
         g["hinges"], g["hinge_edge"] = hinges.astype(np.int32), hedge.astype(np.int32)
         g["boundary"] = boundary
         cg = f.create_group("cycles")
+        sg = f.create_group("stage_ends") if a.stage_ends else None
+        t = 0.0
         for n in range(1, a.cycles + 1):
+            at_stage = [p.copy() for _ in stages]  # p at each stage end of this cycle
             for _ in range(int(round(12 * 2.7 / (n + 2.7)))):
                 kind, c = rng.integers(3), rng.integers(1, k)
                 lo, hi = np.sort(rng.integers(0, k + 1, 2))
@@ -81,6 +99,16 @@ def main():
                     dd = c - k // 2
                     sel = (e0[:, 1] - e0[:, 0] == dd) & (e1[:, 1] - e1[:, 0] == dd) & (e0[:, 0] != e1[:, 0])
                 p[sel] = rng.choice([-1, 1]) * rng.uniform(0.3, 1.5)
+                made = stage_rng.choice(len(stages), p=stage_share)
+                for j in range(made, len(stages)):
+                    at_stage[j][sel] = p[sel]
+            if sg is not None:
+                for j, name in enumerate(stages):
+                    t += 0.5
+                    g1 = sg.create_group(f"{len(sg):06d}")
+                    g1["p"] = at_stage[j]
+                    g1.attrs["t"], g1.attrs["cycle"] = t, np.int32(n)
+                    g1.attrs["stage"], g1.attrs["stage_index"] = name, np.int32(j)
             cyc = cg.create_group(f"{n:04d}")
             cyc["p"], cyc["x"] = p, pos
     print(f"make_synthetic_run.py: wrote {a.out}")

@@ -1,6 +1,7 @@
 // Synthetic inputs for the analysis tests: a regularly triangulated square mesh with its edges
 // and hinges (built here, independent of the simulator's mesh code), and a run file written with
-// the HDF5 C++ API in the layout of docs/FILE_FORMAT.md, optionally broken on purpose.
+// the HDF5 C++ API in the layout of docs/FILE_FORMAT.md (with /stage_ends when asked),
+// optionally broken on purpose.
 #pragma once
 
 #include "analysis/io/run_data.hpp"
@@ -8,6 +9,8 @@
 #include <H5Cpp.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
@@ -66,12 +69,33 @@ inline std::vector<std::size_t> hinges_on_line(const MeshData& m, int axis, doub
   return out;
 }
 
+/// Hinges whose edge lies on the straight segment from (ax, ay) to (bx, by), ends included.
+inline std::vector<std::size_t> hinges_on_segment(const MeshData& m, double ax, double ay,
+                                                  double bx, double by, double tol = 1e-9) {
+  const double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+  auto on = [&](std::int32_t node) {
+    const auto& q = m.ref_positions[static_cast<std::size_t>(node)];
+    const double s = ((q[0] - ax) * dx + (q[1] - ay) * dy) / len2;
+    const double cross = (q[0] - ax) * dy - (q[1] - ay) * dx;
+    return std::abs(cross) < tol && s > -tol && s < 1 + tol;
+  };
+  std::vector<std::size_t> out;
+  for (std::size_t h = 0; h < m.hinges.size(); ++h) {
+    const auto& e = m.edges[static_cast<std::size_t>(m.hinge_edge[h])];
+    if (on(e[0]) && on(e[1])) out.push_back(h);
+  }
+  return out;
+}
+
 struct WriteOptions {
   bool with_cycles_group = true;
   bool wrong_p_shape = false;
   bool omit_rest_lengths = false;
   std::string config = "protocol:\n  stages:\n    - type: roll\n    - type: compress\n"
                        "      compaction: 0.27\n";
+  std::vector<StageEndData> stage_ends;  ///< written as /stage_ends when not empty
+  bool stage_group_without_records = false;  ///< an empty /stage_ends group
+  bool stage_end_without_cycle_attr = false; ///< malformed: the first record lacks @cycle
 };
 
 template <class T, std::size_t K>
@@ -120,6 +144,24 @@ inline void write_run(const std::string& path, const MeshData& m,
     if (o.wrong_p_shape) p.pop_back();
     write_vec(g1, "p", p, H5::PredType::NATIVE_DOUBLE);
     write_rows(g1, "x", m.ref_positions, H5::PredType::NATIVE_DOUBLE);
+  }
+  if (o.stage_ends.empty() && !o.stage_group_without_records) return;
+  H5::Group sg = f.createGroup("stage_ends");
+  for (std::size_t k = 0; k < o.stage_ends.size(); ++k) {
+    const StageEndData& s = o.stage_ends[k];
+    char name[24];
+    std::snprintf(name, sizeof name, "%06zu", k);
+    H5::Group g1 = sg.createGroup(name);
+    write_vec(g1, "p", s.p, H5::PredType::NATIVE_DOUBLE);
+    const H5::DataSpace scalar;
+    g1.createAttribute("t", H5::PredType::NATIVE_DOUBLE, scalar)
+        .write(H5::PredType::NATIVE_DOUBLE, &s.t);
+    if (!(o.stage_end_without_cycle_attr && k == 0))
+      g1.createAttribute("cycle", H5::PredType::NATIVE_INT32, scalar)
+          .write(H5::PredType::NATIVE_INT32, &s.cycle);
+    g1.createAttribute("stage_index", H5::PredType::NATIVE_INT32, scalar)
+        .write(H5::PredType::NATIVE_INT32, &s.stage_index);
+    g1.createAttribute("stage", st, scalar).write(st, s.stage);
   }
 }
 

@@ -1,4 +1,6 @@
-// End-to-end: crumple-analyze on small synthetic run files (layout of docs/FILE_FORMAT.md),
+// End-to-end: crumple-analyze on small synthetic run files (layout of docs/FILE_FORMAT.md): an
+// older file without /stage_ends (works, with a warning), a file with /stage_ends and c0 in its
+// config (per-stage lengths, threshold rule, sensitivity table, increment fits, the new CSVs),
 // and bad input giving exit code 2 with nothing written.
 #include "tests/analysis/synthetic_run.hpp"
 
@@ -18,6 +20,13 @@ int run_analyze(const std::string& args) {
   const std::string cmd = std::string(CRUMPLE_ANALYZE_EXE) + " " + args + " > /dev/null 2>&1";
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::vector<std::string> lines(const fs::path& f) {
+  std::ifstream in(f);
+  std::vector<std::string> out;
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
 }
 
 fs::path scratch(const std::string& name) {
@@ -71,6 +80,22 @@ TEST(CrumpleAnalyze, SyntheticRunEndToEnd) {
   EXPECT_NEAR(j["input"]["compaction"].get<double>(), 0.27, 1e-12);
   EXPECT_TRUE(j["log_fit"]["crease_length_L0"].contains("c1"));
   EXPECT_TRUE(c[2].contains("a_fit") && c[2].contains("ks_pvalue"));
+  // An older file: no /stage_ends, so no per-stage data, said in a warning; no c0 in the
+  // config, so the default c0 with a warning.
+  bool stage_warning = false, c0_warning = false;
+  for (const auto& w : j["warnings"]) {
+    stage_warning = stage_warning || w.get<std::string>().find("/stage_ends") != std::string::npos;
+    c0_warning = c0_warning || w.get<std::string>().find("plastic_c0") != std::string::npos;
+  }
+  EXPECT_TRUE(stage_warning);
+  EXPECT_TRUE(c0_warning);
+  for (const auto& ci : c) {
+    EXPECT_TRUE(ci["stages"].is_array() && ci["stages"].empty());
+    EXPECT_TRUE(ci["new_length_share_after_compress"].is_null());
+  }
+  EXPECT_EQ(j["parameters"]["threshold_rule"]["kind"], "fraction_of_c0");
+  EXPECT_EQ(j["parameters"]["threshold_rule"]["c0"], 0.1);
+  EXPECT_EQ(lines(out / "stages.csv").size(), 1u);  // the header only
 
   // Facet areas of the last cycle: columns of 1/4, 1/4, 1/2 of the width times two rows.
   std::ifstream fcsv(out / "facets.csv");
@@ -92,6 +117,115 @@ TEST(CrumpleAnalyze, SyntheticRunEndToEnd) {
   ASSERT_EQ(x.size(), 6u);
   for (int i = 0; i < 6; ++i) EXPECT_NEAR(x[i] / truth[i], 1.0, 0.02) << i;
   EXPECT_NEAR(sum, 0.01, 1e-9);  // the facets tile the sheet (CSV has 10 digits)
+  fs::remove_all(dir);
+}
+
+TEST(CrumpleAnalyze, StagesThresholdRuleAndSensitivity) {
+  const fs::path dir = scratch("stages");
+  const MeshData m = synth::square_grid_mesh(20, 0.1);
+  const char* names[] = {"roll", "compress", "release", "unfold"};
+  synth::WriteOptions o;
+  o.config = "integrator:\n  plastic_c0: 0.3\nprotocol:\n  stages:\n    - type: roll\n"
+             "    - type: compress\n      compaction: 0.27\n    - type: release\n"
+             "    - type: unfold\n";
+  std::vector<std::vector<double>> cycles;
+  std::vector<double> p(m.hinges.size(), 0.0);
+  // Cycle n creases the line x = n cm in compress (|p| = 0.9) and y = n cm in release
+  // (|p| = 0.2: a crease at 0.5 c0 = 0.15, not at c0 = 0.3).
+  double t = 0;
+  for (int n = 1; n <= 4; ++n) {
+    for (int k = 0; k < 4; ++k) {
+      if (k == 1)
+        for (auto h : synth::hinges_on_line(m, 0, 0.01 * n)) p[h] = 0.9;
+      if (k == 2)
+        for (auto h : synth::hinges_on_line(m, 1, 0.01 * n)) p[h] = -0.2;
+      o.stage_ends.push_back({n, k, names[k], t += 0.5, p});
+    }
+    cycles.push_back(p);
+  }
+  const fs::path run = dir / "run.h5";
+  synth::write_run(run.string(), m, cycles, o);
+  ASSERT_EQ(run_analyze(run.string() + " --bootstrap 20"), 0);
+  const fs::path out = dir / "run.analysis";
+  std::ifstream in(out / "stats.json");
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_DOUBLE_EQ(j["parameters"]["threshold"].get<double>(), 0.15);
+  EXPECT_EQ(j["parameters"]["threshold_rule"]["kind"], "fraction_of_c0");
+  EXPECT_DOUBLE_EQ(j["parameters"]["threshold_rule"]["factor"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(j["parameters"]["threshold_rule"]["c0"].get<double>(), 0.3);
+  EXPECT_TRUE(j["parameters"]["threshold_note"].is_string());
+  const auto& c = j["cycles"];
+  ASSERT_EQ(c.size(), 4u);
+  for (int i = 0; i < 4; ++i) {
+    const auto& st = c[i]["stages"];
+    ASSERT_EQ(st.size(), 4u) << i;
+    double sum = 0;
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_EQ(st[k]["index"], k);
+      EXPECT_EQ(st[k]["stage"], names[k]);
+      sum += st[k]["new_crease_length_L0"].get<double>();
+    }
+    EXPECT_NEAR(sum, c[i]["new_crease_length_L0"].get<double>(), 1e-12) << i;
+    EXPECT_NEAR(st[1]["new_crease_length_L0"].get<double>(), 1.0, 1e-9) << i;  // x line
+    EXPECT_NEAR(st[2]["new_crease_length_L0"].get<double>(), 1.0, 1e-9) << i;  // y line
+    EXPECT_NEAR(c[i]["new_length_share_after_compress"].get<double>(), 0.5, 1e-9) << i;
+    EXPECT_NEAR(st[3]["crease_length_L0"].get<double>(), 2.0 * (i + 1), 1e-9) << i;
+    EXPECT_TRUE(c[i]["dangling_fraction"].is_number());
+    EXPECT_TRUE(c[i]["n_single_triangle_facets"].is_number_integer());
+    EXPECT_TRUE(c[i]["single_triangle_fraction"].is_number());
+  }
+  const auto& s = j["threshold_sensitivity"];
+  ASSERT_EQ(s["factors_of_c0"].size(), 6u);
+  ASSERT_EQ(s["cycles"].size(), 4u);
+  // At F <= 0.5 both lines count, at F >= 0.75 (threshold 0.225 > 0.2) only the x lines.
+  const auto& l4 = s["cycles"][3]["crease_length_L0"];
+  EXPECT_NEAR(l4[1].get<double>(), 8.0, 1e-9);
+  EXPECT_NEAR(l4[2].get<double>(), 4.0, 1e-9);
+  EXPECT_EQ(s["cycles"][3]["n_facets"][1], 25);
+  EXPECT_EQ(s["cycles"][3]["n_facets"][2], 5);
+  for (const char* k : {"crease_length_L0", "perimeter_P", "crease_length_L0_increments",
+                        "perimeter_P_increments"}) {
+    ASSERT_TRUE(j["log_fit"][k].is_object()) << k;
+    EXPECT_TRUE(j["log_fit"][k].contains("sigma_C") && j["log_fit"][k].contains("sigma_n0")) << k;
+  }
+  EXPECT_NE(j["log_fit"]["perimeter_P_increments"]["model"].get<std::string>().find("increments"),
+            std::string::npos);
+
+  const auto stages_csv = lines(out / "stages.csv");
+  ASSERT_EQ(stages_csv.size(), 1u + 16u);
+  EXPECT_EQ(stages_csv[0], "cycle,stage_index,stage,t,crease_edges,crease_length_L0,"
+                           "new_crease_length_L0");
+  EXPECT_EQ(stages_csv[2].rfind("1,1,compress,", 0), 0u) << stages_csv[2];
+  const auto sens_csv = lines(out / "sensitivity.csv");
+  ASSERT_EQ(sens_csv.size(), 1u + 4u * 6u);
+  EXPECT_EQ(sens_csv[0], "cycle,factor_of_c0,threshold,crease_length_L0,perimeter_P,n_facets");
+
+  // --threshold-c0 1 moves the threshold to c0: the release creases (0.2) no longer count.
+  ASSERT_EQ(run_analyze(run.string() + " --bootstrap 20 --threshold-c0 1 -o " +
+                        (dir / "c0").string()), 0);
+  std::ifstream in2(dir / "c0" / "stats.json");
+  const auto j2 = nlohmann::json::parse(in2);
+  EXPECT_DOUBLE_EQ(j2["parameters"]["threshold"].get<double>(), 0.3);
+  EXPECT_NEAR(j2["cycles"][3]["crease_length_L0"].get<double>(), 4.0, 1e-9);
+  EXPECT_NEAR(j2["cycles"][3]["new_length_share_after_compress"].get<double>(), 0.0, 1e-12);
+  fs::remove_all(dir);
+}
+
+TEST(CrumpleAnalyze, ThresholdAndThresholdC0TogetherExitTwo) {
+  const fs::path dir = scratch("both");
+  const MeshData m = synth::square_grid_mesh(4, 0.1);
+  synth::write_run((dir / "good.h5").string(), m, {std::vector<double>(m.hinges.size(), 0.3)});
+  const fs::path out = dir / "out";
+  const std::string base = (dir / "good.h5").string() + " -o " + out.string();
+  EXPECT_EQ(run_analyze(base + " --threshold 0.1 --threshold-c0 0.5"), 2);
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(run_analyze(base + " --threshold-c0 0"), 2);
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(run_analyze(base + " --threshold 0.1"), 0);
+  std::ifstream in(out / "stats.json");
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["parameters"]["threshold_rule"]["kind"], "absolute");
+  EXPECT_DOUBLE_EQ(j["parameters"]["threshold"].get<double>(), 0.1);
   fs::remove_all(dir);
 }
 

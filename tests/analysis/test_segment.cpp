@@ -1,5 +1,5 @@
-// Facet segmentation on synthetic crease maps with known facets (DESIGN.md §9 "synthetic crease
-// maps with known facets are segmented exactly"): a Voronoi partition, a grid and single folds.
+// Facet segmentation on synthetic crease maps with known facets, which must be segmented
+// exactly: a Voronoi partition, a grid and single folds.
 #include "analysis/facets/segment.hpp"
 
 #include <gtest/gtest.h>
