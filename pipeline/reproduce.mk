@@ -42,10 +42,16 @@ $(RUNDIR)/seed%.h5: $(PROTOCOL) $(PRESET_FILE)
 $(RUNDIR)/seed%.analysis/stats.json: $(RUNDIR)/seed%.h5
 	$(ANALYZE) $< -o $(RUNDIR)/seed$*.analysis
 
+# The report: ensemble statistics and fits, the four figures (crease length against the law,
+# where the creases were made, facet areas, crease maps of the first seed), then REPORT.md.
+# `pipeline/report/check_report.py $(RESULTS)/REPORT.md` checks that it is complete.
+SHOWN := $(dir $(firstword $(STATS)))
 $(RESULTS)/REPORT.md: $(STATS) $(wildcard pipeline/plots/*.py pipeline/report/*.py)
 	@mkdir -p $(RESULTS)
 	$(PYTHON) pipeline/plots/ensemble.py -o $(RESULTS)/ensemble.json $(STATS)
 	$(PYTHON) pipeline/plots/plot_crease_length.py $(RESULTS)/ensemble.json -o $(RESULTS)/crease_length.png
+	$(PYTHON) pipeline/plots/plot_stages.py $(RESULTS)/ensemble.json -o $(RESULTS)/stages.png
 	$(PYTHON) pipeline/plots/plot_facets.py $(RESULTS)/ensemble.json -o $(RESULTS)/facets.png
+	$(PYTHON) pipeline/plots/plot_maps.py $(SHOWN) -o $(RESULTS)/maps.png
 	$(PYTHON) pipeline/report/make_report.py --ensemble $(RESULTS)/ensemble.json \
-	  --runs $(dir $(firstword $(STATS))) --preset $(PRESET) --protocol $(PROTOCOL) -o $@
+	  --runs $(SHOWN) --preset $(PRESET) --protocol $(PROTOCOL) -o $@

@@ -1,6 +1,6 @@
 """Helpers shared by the pipeline's plot and report scripts: input checks that fail with a clear
 message, the experimental constants from data/, and the fragmentation-model density
-phi(xi; a) of statistics.md section 3.3."""
+phi(xi; a) of docs/STATISTICS.md §3.3."""
 import csv
 import json
 import math
@@ -41,7 +41,7 @@ def law_constants():
 
 
 def experimental_law(n, compaction):
-    """l/L0 = c1 (1 - D) ln(1 + c2 n / D) (statistics.md section 2.1)."""
+    """l/L0 = c1 (1 - D) ln(1 + c2 n / D) (docs/STATISTICS.md §2.1)."""
     c1, c2 = law_constants()
     return [c1 * (1 - compaction) * math.log(1 + c2 * k / compaction) for k in n]
 
