@@ -1,4 +1,4 @@
-// Stage types registered by name (STYLE.md habit 6). Built-in types are registered in
+// Stage types registered by name (docs/MODEL.md §11.1). Built-in types are registered in
 // builtin_stages.cpp, one line each; adding a stage type is one C++ file plus one line there.
 // An unknown name is rejected with the sorted list of valid names.
 #pragma once

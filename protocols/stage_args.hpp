@@ -1,5 +1,5 @@
 // Validated parameters of one stage, read from its YAML map with yaml-cpp's marks so that every
-// error names the file, line, column and key (DESIGN.md §10; exit code 2 via InputError).
+// error names the file, line, column and key (docs/CONFIG.md; exit code 2 via InputError).
 //
 // The parameters a stage type accepts are declared once, as ParamSpecs in its registration;
 // StageArgs rejects unknown keys (listing the valid ones), missing required keys, wrong types

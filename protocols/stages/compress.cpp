@@ -1,6 +1,6 @@
 // Stage `compress`: axial compression of the rolled sheet between two pistons inside a
 // cylindrical container, to a target compaction ratio (the experiment's knob:
-// compaction = final / initial piston gap, statistics.md §1).
+// compaction = final / initial piston gap, docs/STATISTICS.md §1).
 //
 // The container is a cylinder wall (allowed inside) about the roll's axis. It starts just outside
 // the sheet's current radial extent and closes to (1 + clearance) times the roll radius over

@@ -1,5 +1,5 @@
 // Stage `roll`: wrap the flat sheet into a cylinder of radius R about an in-plane axis
-// (DESIGN.md §6, the first step of each axial-crumpling cycle; paper Fig. 9a).
+// (docs/MODEL.md §11.3, the first step of each axial-crumpling cycle; paper Fig. 9a).
 //
 // Every node is tethered to a target that follows an isometric bending of the reference sheet:
 // with u the reference coordinate across the axis (centred) and w along it, the target at

@@ -1,4 +1,4 @@
-// Rigid walls as smooth one-sided repulsive potentials (DESIGN.md §6): plane, cylinder, sphere,
+// Rigid walls as smooth one-sided repulsive potentials (docs/MODEL.md §11.2): plane, cylinder, sphere,
 // cone. A wall is a signed distance d(x, t) to its surface, positive on the allowed side; each
 // node with d < range feels the potential
 //     U(d) = k/3 (range - d)^3,   F = -U'(d) grad d = k (range - d)^2 grad d,

@@ -1,4 +1,5 @@
-// crumple-sim: runs a protocol on a sheet and writes the run file (README.md, DESIGN.md §10).
+// crumple-sim: runs a protocol on a sheet and writes the run file (README.md, "Running the
+// simulator"; keys in docs/CONFIG.md, file layout in docs/FILE_FORMAT.md).
 //   crumple-sim CONFIG.yaml -o RUN.h5 [--seed S] [--threads N] [--set key=value]... [--resume]
 //               [--quiet] [--list-stages]
 // Exit codes: 0 done, 2 bad input (nothing written), 3 numerical failure (checkpoint kept in

@@ -1,4 +1,5 @@
-// Exceptions that map to the exit codes users and scripts rely on (DESIGN.md §10):
+// Exceptions that map to the exit codes users and scripts rely on (README.md, "Running the
+// simulator"):
 //   InputError       -> 2  bad config, arguments or input file; nothing is written
 //   NumericalFailure -> 3  the integration cannot continue; a checkpoint is kept
 // anything else      -> 1

@@ -1,5 +1,5 @@
 // The plastic flow law of the rest curvature (paper §2.5, eq. 17-20), kept behind one struct
-// because DESIGN.md §3 says its form may still change.
+// so that its form can be changed in one place (docs/MODEL.md §7).
 //
 // For a hinge with current curvature c = 2 sin(theta/2) and rest curvature p,
 //     dp/dt = g(c, p) = rate * sgn(c - p) f(|c - p|),

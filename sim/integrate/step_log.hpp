@@ -1,4 +1,4 @@
-// What the hybrid integrator records: one row per accepted step (DESIGN.md §5) and a run
+// What the hybrid integrator records: one row per accepted step (docs/MODEL.md §10.9) and a run
 // summary (steps per mode, Newton and CG effort, rejections by reason, wall time split).
 #pragma once
 

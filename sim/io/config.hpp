@@ -1,4 +1,4 @@
-// Loading and printing the run configuration (DESIGN.md §10). Every key is validated: an
+// Loading and printing the run configuration (docs/CONFIG.md). Every key is validated: an
 // unknown key, a wrong type, an out-of-range value, an unknown choice or a YAML syntax error is
 // an InputError "FILE:LINE:COLUMN: section.key: what is wrong" (1-based). `--set dotted.key=value`
 // overrides are applied to the YAML before validation; errors in them name "--set key=value".

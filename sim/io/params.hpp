@@ -1,4 +1,4 @@
-// Every parameter of a run, in one typed tree with its defaults (DESIGN.md §2, §10). Filled
+// Every parameter of a run, in one typed tree with its defaults. Filled
 // from YAML by load_config (config.hpp), printed back whole by resolved_yaml and stored in every
 // output file. Keys are the member names; docs/CONFIG.md lists them with types and ranges.
 #pragma once

@@ -1,4 +1,4 @@
-// Random Lloyd-regularised Delaunay meshes of a square or a disk (paper §3.1, DESIGN.md §4).
+// Random Lloyd-regularised Delaunay meshes of a square or a disk (paper §3.1, docs/MODEL.md §9).
 //
 // Boundary nodes are placed at the mean node spacing along the outline (square corners
 // included) and held fixed; interior points are drawn uniformly from std::mt19937_64(seed),
@@ -7,7 +7,7 @@
 // Fig. 4) so that mesh neighbours have nearby indices and the block-Jacobi blocks of the
 // solver capture most of the matrix.
 //
-// Usage (the `mesh` section of a config, DESIGN.md §10):
+// Usage (the `mesh` section of a config, docs/CONFIG.md):
 //   mesh: { shape: disk, size: 0.1, nodes: 3000, seed: 7 }
 #pragma once
 

@@ -1,4 +1,4 @@
-// Quality figures of a triangulated sheet (DESIGN.md §4): the numbers reported and tested for
+// Quality figures of a triangulated sheet (docs/MODEL.md §9): the numbers reported and tested for
 // generated meshes (smallest angle >= 20 degrees, edge-length coefficient of variation <= 0.2),
 // and the index locality that the Hilbert renumbering is for (paper Fig. 4).
 #pragma once

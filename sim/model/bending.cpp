@@ -126,7 +126,7 @@ void BendingTerm::add_jacobians(const State& s, Jacobians& J) const {
     });
   } else {
     update_cache(s);
-    // Per triangle (bending-derivatives.md §6.1): each triangle sums, over its interior edges,
+    // Per triangle (docs/MODEL.md §4.5): each triangle sums, over its interior edges,
     // the zeta-weighted half-hinge terms into S_a (scalars) and G_ab (in-plane vectors), and the
     // part of xi grad(theta) grad(theta)^T whose two nodes lie in this triangle into local
     // blocks (pairs on the hinge edge are taken by T1 only); its 9 blocks, S_a dn_b n^T +

@@ -1,4 +1,4 @@
-// Bending with plastic rest curvature (paper eq. 15; Appendix B.4; bending-derivatives.md §4-6).
+// Bending with plastic rest curvature (paper eq. 15; Appendix B.4; docs/MODEL.md §4).
 //
 // For each hinge h with bend angle theta (hinge_geometry.hpp), the dimensionless curvature is
 // c = 2 sin(theta/2) (signed as theta, eq. 14 and 17) and the energy is
@@ -8,7 +8,7 @@
 //     Hx = zeta H(theta) + xi grad(theta) grad(theta)^T,
 //     zeta = kb f (c - p) cos(theta/2),  xi = kb f (cos^2(theta/2) - 1/2 (c - p) sin(theta/2)),
 // and Hp = -dF/dp = -kb f grad(c). The zeta H(theta) part is assembled per triangle
-// (bending-derivatives.md §6.1: each triangle sums the half-hinge Hessians of its three edges
+// (docs/MODEL.md §4.5: each triangle sums the half-hinge Hessians of its three edges
 // before writing its 9 blocks once) or, for comparison, per hinge.
 #pragma once
 

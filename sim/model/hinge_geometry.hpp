@@ -1,5 +1,5 @@
 // The bend angle of a hinge and its exact first and second derivatives, robust at the flat
-// state theta = 0 (bending-derivatives.md §5-6, written here in a per-triangle form).
+// state theta = 0 (docs/MODEL.md §4.3, written here in a per-triangle form).
 //
 // theta is the signed angle between the normals of T1 = (x0, x1, x2) and T2 = (x1, x0, x3),
 // positive when (n1 x n2) . e0 > 0 (paper eq. 14), computed with atan2 so it is accurate over
@@ -45,7 +45,7 @@ using Vec12 = Eigen::Matrix<double, 12, 1>;
 using Mat12 = Eigen::Matrix<double, 12, 12>;
 
 /// Half-angle sines and cosines without trigonometric calls: with unit normals n1, n2,
-/// sin(theta/2) = sign |n1 - n2|/2 and cos(theta/2) = |n1 + n2|/2 (bending-derivatives.md §2).
+/// sin(theta/2) = sign |n1 - n2|/2 and cos(theta/2) = |n1 + n2|/2 (docs/MODEL.md §4.1).
 struct HalfAngle {
   double sin_half = 0, cos_half = 1;
 };

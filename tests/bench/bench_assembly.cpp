@@ -1,6 +1,6 @@
 // Benchmark of force and Jacobian assembly (issue: foundation): time per hinge at 12k and 48k
 // nodes with 1 and 2 threads, the bending Hessian per triangle vs per hinge
-// (bending-derivatives.md §6.1), and the memory of the assembled system per node.
+// (docs/MODEL.md §4.5), and the memory of the assembled system per node.
 #include "sim/model/sheet_model.hpp"
 #include "tests/bench/bench_mesh.hpp"
 

@@ -1,6 +1,6 @@
 // Bending energy of a flat sheet wrapped onto a cylinder: the discrete energy must approach the
 // continuum kappa A / (2 R^2), kappa = sqrt(3) kb / 2 (paper eq. A.10-A.12), independent of the
-// roll direction and of the resolution (DESIGN.md §3: about 1.11-1.14 on Lloyd meshes).
+// roll direction and of the resolution (docs/MODEL.md §4.6: 1.00-1.04 measured on these meshes).
 #include "sim/mesh/generate.hpp"
 #include "sim/model/bending.hpp"
 

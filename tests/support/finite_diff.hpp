@@ -1,4 +1,4 @@
-// The one finite-difference checker applied to every force term (STYLE.md habit 4).
+// The one finite-difference checker applied to every force term (docs/MODEL.md §2).
 //
 // For a ForceTerm at a state it compares, by central differences with step h:
 //   - the force against minus the gradient of the energy (conservative terms only),
