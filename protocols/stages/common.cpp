@@ -36,6 +36,12 @@ bool quiescent(const StageContext& ctx, double ratio, double speed, double* a_ra
   return a < ratio && v < speed;
 }
 
+double foundation_tether_stiffness(const StageContext& ctx, double flatten_length) {
+  const double xi = flatten_length * ctx.sheet.size;
+  const double kappa = std::sqrt(3.0) / 2.0 * ctx.sheet.kb;
+  return kappa * ctx.sheet.area / (static_cast<double>(ctx.model->num_nodes()) * std::pow(xi, 4));
+}
+
 Vec3 reference_centroid(const Mesh& mesh) { return mesh.ref.rowwise().mean(); }
 
 double smooth_ramp(double s) {

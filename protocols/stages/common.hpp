@@ -20,6 +20,12 @@ bool quiescent(const StageContext& ctx, double ratio, double speed, double* a_ra
                double* speed_sizes = nullptr);
 double reference_acceleration(const StageContext& ctx);
 
+/// Stiffness per node of tethers that act on the sheet together as an elastic foundation of
+/// modulus K = k n / A which flattens (or bends) the sheet on length scales above
+/// xi = flatten_length x sheet size and barely changes a crease sharper than xi:
+/// k = kappa A / (n xi^4), kappa = sqrt(3) kb / 2 (paper eq. 6; docs/MODEL.md §11.3).
+double foundation_tether_stiffness(const StageContext& ctx, double flatten_length);
+
 /// Centroid of the reference positions.
 Vec3 reference_centroid(const Mesh& mesh);
 /// Smooth ramp 0 -> 1 over [0, 1] (C^1: 3s^2 - 2s^3), clamped outside.

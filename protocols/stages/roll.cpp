@@ -5,7 +5,12 @@
 // with u the reference coordinate across the axis (centred) and w along it, the target at
 // curvature k is  o + w a + (sin(k u)/k) b + ((1 - cos(k u))/k) z,  and k grows smoothly from 0
 // to 1/R over `duration`. Bending a flat sheet this way stretches nothing, so the tethers only
-// lead the sheet. The axis direction is drawn at random each cycle (the experiment re-rolls the
+// lead the sheet. They are soft, an elastic foundation that bends the sheet on length scales
+// above `flatten_length` (as in unfold; common.hpp), because a sheet re-rolled after an unfold
+// carries creases: stiff tethers would force every creased hinge to the roll's curvature and
+// bend those with |p| > c0 back past yield, erasing the creases of earlier cycles (measured at
+// 1500 nodes with the earlier 0.1 ks tethers: the roll cut the crease length at 0.5 c0 by up to
+// 55 L0 and left no |p| above 0.37). The axis direction is drawn at random each cycle (the experiment re-rolls the
 // flattened sheet by hand) unless `axis: fixed`. On completion the stage records the roll's axis,
 // radius and height H0 for the compress stage and removes its tethers.
 #include "protocols/stages/common.hpp"
@@ -27,8 +32,10 @@ class RollStage : public Stage {
         random_axis_(a.text("axis") == "random"),
         angle_(a.number("angle") * M_PI / 180.0),
         duration_(a.number("duration")),
-        stiffness_(a.number("stiffness")),
-        tolerance_(a.number("tolerance")) {
+        flatten_length_(a.number("flatten_length")),
+        tolerance_(a.number("tolerance")),
+        threshold_(a.number("threshold")),
+        speed_(a.number("speed")) {
     apply_common(*this, a);
   }
   std::string type() const override { return "roll"; }
@@ -53,7 +60,13 @@ class RollStage : public Stage {
     }
     const double umid = 0.5 * (umin + umax);
     for (auto& u : u_) u -= umid;
-    origin_ = c + umid * b_;
+    // The roll is built where the sheet lies now: a sheet that an earlier unfold laid out away
+    // from its reference position (unfold keeps the sheet's centre where it is) would otherwise
+    // be dragged there by the stiff tethers within the ramp time, a jerk that flaps the sheet and
+    // bends creased hinges back past yield.
+    const Vec3 shift =
+        Eigen::Map<const Eigen::Matrix3Xd>(ctx.state->x.data(), 3, n).rowwise().mean() - c;
+    origin_ = c + shift + umid * b_;
     R_ = radius_ > 0 ? radius_ : (umax - umin) / (2.0 * M_PI * wrap_);
     height_ = wmax - wmin;
     wmid_ = 0.5 * (wmin + wmax);
@@ -73,15 +86,20 @@ class RollStage : public Stage {
     };
     // The stiffness ramps over a tenth of the duration so a sheet that is not exactly at its
     // reference position (after an unfold) is not yanked.
-    tethers_ = std::make_shared<TetherTerm>(std::move(nodes), targets, stiffness_ * ctx.sheet.ks,
+    xi_ = flatten_length_ * ctx.sheet.size;
+    tethers_ = std::make_shared<TetherTerm>(std::move(nodes), targets,
+                                            foundation_tether_stiffness(ctx, flatten_length_),
                                             t0_, 0.1 * duration_);
     own(ctx, tethers_);
   }
 
   bool done(StageContext& ctx) override {
     const double t = ctx.state->t;
-    return t >= t0_ + duration_ &&
-           tethers_->max_deviation(*ctx.state) <= tolerance_ * ctx.sheet.spacing;
+    if (t < t0_ + duration_) return false;
+    // A creased sheet does not lie on the isometric roll of the flat one: it is done once it
+    // has settled on its tethers, or is close to the roll.
+    return tethers_->max_deviation(*ctx.state) <= tolerance_ * std::max(xi_, ctx.sheet.spacing) ||
+           quiescent(ctx, threshold_, speed_);
   }
 
   void end(StageContext& ctx) override {
@@ -107,7 +125,7 @@ class RollStage : public Stage {
  private:
   double radius_, wrap_;
   bool random_axis_;
-  double angle_, duration_, stiffness_, tolerance_;
+  double angle_, duration_, flatten_length_, tolerance_, threshold_, speed_, xi_ = 0;
   Vec3 a_, b_, origin_;
   double R_ = 0, height_ = 0, wmid_ = 0, t0_ = 0;
   std::vector<double> u_, w_;
@@ -130,10 +148,16 @@ StageType roll_stage_type() {
       {"angle", K::Number, "0", "axis angle from the x axis in degrees (axis: fixed)"},
       {"duration", K::Number, "0.2", "time to bend from flat to the full roll (s)", 0.0, 1e30,
        true},
-      {"stiffness", K::Number, "0.1", "tether stiffness per node, in units of ks", 0.0, 1e30,
-       true},
+      {"flatten_length", K::Number, "0.05",
+       "the tethers bend the sheet on lengths above this, in sheet sizes (sets their stiffness)",
+       0.0, 1e30, true},
       {"tolerance", K::Number, "0.5",
-       "done when every node is within this many mean edge lengths of its target", 0.0, 1e30,
+       "done when every node is within this many flatten lengths (or edges) of its target...",
+       0.0, 1e30, true},
+      {"threshold", K::Number, "1e-6",
+       "... or quiescent: max|F|/m < threshold x ks/(m lambda)", 0.0, 1e30, true},
+      {"speed", K::Number, "1e-3",
+       "... and every node slower than this relative to the rigid motion (sizes/s)", 0.0, 1e30,
        true},
   };
   for (auto& p : common_params(10.0, 0.01)) t.params.push_back(p);

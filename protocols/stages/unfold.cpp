@@ -53,9 +53,7 @@ class UnfoldStage : public Stage {
       const double s = smooth_ramp((t - t0_) / open_time_);
       out = (1.0 - s) * start_ + s * flat_;
     };
-    const double xi = flatten_length_ * ctx.sheet.size;
-    const double kappa = std::sqrt(3.0) / 2.0 * ctx.sheet.kb;
-    k_tether_ = kappa * ctx.sheet.area / (static_cast<double>(n) * std::pow(xi, 4));
+    k_tether_ = foundation_tether_stiffness(ctx, flatten_length_);
     tethers_ = std::make_shared<TetherTerm>(std::move(nodes), targets, k_tether_, t0_,
                                             0.1 * open_time_);
     own(ctx, tethers_);

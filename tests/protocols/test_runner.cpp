@@ -58,7 +58,7 @@ double crease_length(const Mesh& mesh, const VecX& p, double threshold) {
 const char* kRoll = "[{type: roll, duration: 0.2, axis: fixed, angle: 30}]";
 // The roll radius keeps rolling elastic on this coarse grid (hinge curvature about edge / R
 // below c0 = 0.3); the default radius would bend the 1 cm triangles past yield.
-const char* kCycle = R"([{type: roll, duration: 0.2, radius: 0.03},
+const char* kCycle = R"([{type: roll, duration: 0.2, radius: 0.05},
                           {type: compress, compaction: 0.4, speed: 0.2},
                           {type: release}, {type: unfold}])";
 
@@ -71,11 +71,18 @@ TEST(Stages, RollPutsEveryNodeOnTheCylinder) {
   const Checkpoint& c = r.sink.checkpoints.back();
   ASSERT_TRUE(c.apparatus.rolled);
   const double R = c.apparatus.radius;
+  // The tethers are an elastic foundation of length xi = 0.05 sheet sizes (roll.cpp), softer
+  // than this coarse grid (1 cm edges) at the grid scale: the stage ends when every node is
+  // within half an edge of its target (tolerance x max(xi, edge)).
+  const double tol = 0.5 * r.sheet.info.spacing;
+  double mean_dev = 0;
   for (Index i = 0; i < r.model->num_nodes(); ++i) {
     const Vec3 d = node(c.state.x, i) - c.apparatus.axis_point;
     const double radial = (d - d.dot(c.apparatus.axis_dir) * c.apparatus.axis_dir).norm();
-    EXPECT_NEAR(radial, R, 0.02 * R) << "node " << i;
+    EXPECT_NEAR(radial, R, tol) << "node " << i;
+    mean_dev += std::abs(radial - R) / r.model->num_nodes();
   }
+  EXPECT_LT(mean_dev, 0.05 * R);
   EXPECT_NEAR(c.apparatus.axis_dir.dot(Vec3(std::cos(M_PI / 6), std::sin(M_PI / 6), 0)), 1.0,
               1e-12);
 }
@@ -206,4 +213,42 @@ TEST(Stages, ReleaseEndsByQuiescenceWhileTheSheetDrifts) {
   double vmax = 0;
   for (Index i = 0; i < r.model->num_nodes(); ++i) vmax = std::max(vmax, node(r.state.v, i).norm());
   EXPECT_GT(vmax / r.sheet.info.size, 0.2) << "the drift itself decayed";
+}
+
+TEST(Stages, RollKeepsTheCreasesOfEarlierCycles) {
+  // A sheet carrying one straight crease (p = 0.8 > c0 on the hinges along x = size/2, which the
+  // roll about the x axis does not bend) is rolled. Stiff tethers (flatten_length 0.009: about
+  // the 0.1 ks of earlier versions on this grid) hold those hinges near c = 0 and bend them back
+  // past yield, p down towards c0; the default soft tethers let more of the fold stand. A
+  // single crease across the whole sheet is a global fold that any tethering towards the roll
+  // resists, so part of it still flows back.
+  auto lowest_after_roll = [](const std::string& flatten_length) {
+    ProtocolRun r("[{type: roll, duration: 0.2, radius: 0.1, axis: fixed, angle: 0, "
+                  "flatten_length: " + flatten_length + "}]", 0.3,
+                  [](TinySheet& t) {
+                    t = TinySheet(31);
+                    t.settings.plastic_c0 = 0.3;
+                  });
+    const Mesh& mesh = r.model->mesh();
+    const double size = r.sheet.info.size, h = r.sheet.info.spacing;
+    std::vector<Index> crease;
+    for (Index k = 0; k < mesh.num_hinges(); ++k) {
+      const auto& e = mesh.edges[mesh.hinges[k].edge];
+      const Vec3 a = mesh.ref.col(e[0]), b = mesh.ref.col(e[1]);
+      if (std::abs(0.5 * (a.x() + b.x()) - 0.5 * size) < 0.3 * h &&
+          std::abs(b.y() - a.y()) > 2.0 * std::abs(b.x() - a.x()))
+        crease.push_back(k);
+    }
+    EXPECT_GE(crease.size(), 20u);
+    for (Index k : crease) r.state.p[k] = 0.8;
+    r.go();
+    double lowest = 1e9;
+    for (Index k : crease) lowest = std::min(lowest, std::abs(r.state.p[k]));
+    return lowest;
+  };
+  const double stiff = lowest_after_roll("0.009"), soft = lowest_after_roll("0.05");
+  std::printf("lowest |p| on the crease after the roll: stiff tethers %.3f, soft %.3f\n", stiff,
+              soft);
+  EXPECT_GT(soft, stiff + 0.1);
+  EXPECT_GT(soft, 0.3 + 0.1) << "the soft roll flattened the crease back to yield";
 }
