@@ -58,6 +58,7 @@ bench: build
 
 include pipeline/reproduce.mk
 include pipeline/calibration/calibrate.mk
+include pipeline/checks/rate_check.mk
 
 clean:
 	rm -rf $(BUILD) runs results
