@@ -1,4 +1,6 @@
-# Preset `quick` (the default): an ensemble of small sheets, about 13 minutes on 2 cores with the
-# build (measured: each seed 6-6.5 min on one thread, two seeds at a time; 73-79 s per cycle).
+# Preset `quick` (the default): an ensemble of small sheets, about 7 minutes on 2 cores once built
+# (measured: 7 min 4 s for `make reproduce` with four seeds, two at a time on one thread each,
+# 5 cycles of about 50 s). Too coarse for facet statistics: 60-71 % of the facets are single
+# triangles, and by cycle 5 about 70 % of the hinge network is creased (results/REPORT.md).
 PRESET_SEEDS := 1 2 3 4
 PRESET_SETS := --set mesh.nodes=1500 --set protocol.cycles=5
