@@ -89,7 +89,7 @@ TEST(Stages, RollPutsEveryNodeOnTheCylinder) {
 
 TEST(Stages, CompressStaysInsideAndReachesTheTarget) {
   ProtocolRun r(R"([{type: roll, duration: 0.2}, {type: compress, compaction: 0.4, speed: 0.2,
-             clearance: 0.15}])");
+             clearance: 0.15, retract: false}])");
   r.go();
   const Checkpoint& c = r.sink.checkpoints.back();
   const Apparatus& ap = c.apparatus;
