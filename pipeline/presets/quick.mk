@@ -1,6 +1,7 @@
 # Preset `quick` (the default): an ensemble of small sheets, about 7 minutes on 2 cores once built
-# (measured: 7 min 4 s for `make reproduce` with four seeds, two at a time on one thread each,
-# 5 cycles of about 50 s). Too coarse for facet statistics: 60-71 % of the facets are single
-# triangles, and by cycle 5 about 70 % of the hinge network is creased (results/REPORT.md).
+# (measured: 7 min 39 s for `make reproduce` with four seeds, two at a time on one thread each,
+# 5 cycles of about 45 s). Too coarse for facet statistics: 60-71 % of the facets are single
+# triangles, and by cycle 5 three quarters of the 121 L0 hinge network is creased at c0 = 0.3
+# (results/REPORT.md).
 PRESET_SEEDS := 1 2 3 4
 PRESET_SETS := --set mesh.nodes=1500 --set protocol.cycles=5
