@@ -5,12 +5,6 @@
 
 namespace crumple {
 
-double StageContext::max_speed() const {
-  double m = 0;
-  for (Index i = 0; i < state->v.size() / 3; ++i) m = std::max(m, node(state->v, i).norm());
-  return m;
-}
-
 double StageContext::max_deformation_speed() const {
   return max_speed_relative_to_rigid(state->x, state->v);
 }

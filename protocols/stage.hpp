@@ -46,11 +46,10 @@ struct StageContext {
   /// off must switch it back on in end().
   std::function<void(bool)> set_contact = [](bool) {};
 
-  /// Largest node speed and the kinetic energy of the current state.
-  double max_speed() const;
   /// Largest node speed relative to the best-fit rigid motion of the sheet (rigid_motion.hpp):
   /// a free sheet that drifts or spins as a whole is still quiescent in its shape.
   double max_deformation_speed() const;
+  /// Kinetic energy of the current state.
   double kinetic_energy() const;
   /// Largest |F_i|/m over nodes: the acceleration the quasistatic solver leaves.
   double max_acceleration() const;

@@ -25,6 +25,17 @@ def load_json(path, what):
         die(f"{what} {path} is not valid JSON: {e}")
 
 
+def ensemble_cli(doc):
+    """The plot scripts' command line, ENSEMBLE -o OUTPUT: returns the arguments and the loaded
+    ensemble.json."""
+    import argparse
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("ensemble", help="ensemble.json from ensemble.py")
+    ap.add_argument("-o", "--output", required=True)
+    args = ap.parse_args()
+    return args, load_json(args.ensemble, "ensemble file")
+
+
 def read_csv(path):
     """Rows of a CSV file as dicts; lines starting with '#' are comments."""
     if not os.path.isfile(path):

@@ -16,12 +16,11 @@
 
 usage: plot_crease_length.py results/ensemble.json -o results/crease_length.png
 """
-import argparse
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import die, law_constants, load_json  # noqa: E402
+from common import die, ensemble_cli, law_constants  # noqa: E402
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
@@ -78,11 +77,7 @@ def panel(ax, e, key, ylabel, title, law, law_nofactor, nn):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("ensemble", help="ensemble.json from ensemble.py")
-    ap.add_argument("-o", "--output", required=True)
-    args = ap.parse_args()
-    e = load_json(args.ensemble, "ensemble file")
+    args, e = ensemble_cli(__doc__)
     if not e.get("cycles"):
         die(f"{args.ensemble} has no cycles")
     if "fits" not in e:

@@ -9,13 +9,12 @@ in red means more than 20 % of that cycle's facets are single triangles.
 
 usage: plot_facets.py results/ensemble.json -o results/facets.png
 """
-import argparse
 import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import die, load_json, phi, read_csv  # noqa: E402
+from common import die, ensemble_cli, phi, read_csv  # noqa: E402
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
@@ -36,11 +35,7 @@ def log_density(xi):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("ensemble", help="ensemble.json from ensemble.py")
-    ap.add_argument("-o", "--output", required=True)
-    args = ap.parse_args()
-    e = load_json(args.ensemble, "ensemble file")
+    args, e = ensemble_cli(__doc__)
     pooled = {}
     floors = {}
     for r in e["runs"]:

@@ -15,12 +15,11 @@ a figure that says so.
 
 usage: plot_stages.py results/ensemble.json -o results/stages.png
 """
-import argparse
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import die, load_json  # noqa: E402
+from common import die, ensemble_cli  # noqa: E402
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
@@ -32,11 +31,7 @@ STAGE_COLOURS = {"roll": "0.6", "compress": "C0", "release": "C1", "unfold": "C3
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("ensemble", help="ensemble.json from ensemble.py")
-    ap.add_argument("-o", "--output", required=True)
-    args = ap.parse_args()
-    e = load_json(args.ensemble, "ensemble file")
+    args, e = ensemble_cli(__doc__)
     if "stages" not in e:
         die(f"{args.ensemble} was written by an older ensemble.py; run pipeline/plots/ensemble.py again")
     st = e["stages"]

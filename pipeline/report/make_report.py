@@ -48,14 +48,6 @@ def pct_pm(m, s):
     return f"{100 * m:.1f} %" if s is None else f"{100 * m:.1f} ± {100 * s:.2g} %"
 
 
-def judged(sim, sem, ref):
-    """'disagree, 34.1 s.e.' without nested parentheses."""
-    z = distance(sim, sem, ref)
-    if z is None:
-        return "not judged: no seed-to-seed spread"
-    return f"{'agree' if z <= AGREE_SEM else 'disagree'}, {z:.1f} s.e."
-
-
 def distance(sim, sem, ref):
     """|sim - ref| / sem, or None without a positive s.e.m."""
     if sim is None or ref is None or not sem:
@@ -63,12 +55,15 @@ def distance(sim, sem, ref):
     return abs(sim - ref) / sem
 
 
-def judge(sim, sem, ref):
-    """'agree (0.8 s.e.)' / 'disagree (5.1 s.e.)' / a statement why it cannot be judged."""
+def judgement(sim, sem, ref, inline=False):
+    """'agree (0.8 s.e.)' / 'disagree (5.1 s.e.)' / why it cannot be judged; inline=True gives
+    'disagree, 5.1 s.e.' for use inside parentheses."""
     z = distance(sim, sem, ref)
     if z is None:
-        return "cannot be judged in standard errors (no seed-to-seed spread: fewer than 2 runs)"
-    return f"{'agree' if z <= AGREE_SEM else 'disagree'} ({z:.1f} s.e.)"
+        return ("not judged: no seed-to-seed spread" if inline else
+                "cannot be judged in standard errors (no seed-to-seed spread: fewer than 2 runs)")
+    w = "agree" if z <= AGREE_SEM else "disagree"
+    return f"{w}, {z:.1f} s.e." if inline else f"{w} ({z:.1f} s.e.)"
 
 
 def word(sim, sem, ref):
@@ -157,7 +152,7 @@ def main():
         if zs:
             n_dis = sum(1 for z in zs if z[4] == "disagree")
             parts = "; ".join(f"cycle {n}: {fmt(m)} vs {fmt(ref)} "
-                              f"({'below' if m < ref else 'above'}, {judged(m, s, ref)})"
+                              f"({'below' if m < ref else 'above'}, {judgement(m, s, ref, inline=True)})"
                               for n, m, s, ref, w, z in zs)
             if all(z[4] is None for z in zs):
                 head = "cannot be judged in standard errors (fewer than 2 runs)"
@@ -178,7 +173,7 @@ def main():
         for c in cycles:
             m, s, ref = c["crease_length_L0_mean"], c["crease_length_L0_sem"], law.get(c["cycle"])
             if m is not None and ref is not None:
-                lz.append(f"cycle {c['cycle']}: {fmt(m)} vs {fmt(ref)} ({judged(m, s, ref)})")
+                lz.append(f"cycle {c['cycle']}: {fmt(m)} vs {fmt(ref)} ({judgement(m, s, ref, inline=True)})")
         dang = [c["dangling_fraction_mean"] for c in cycles if c.get("dangling_fraction_mean") is not None]
         if lz:
             V.append("- ℓ/L0 (creased-edge length, beside P; the experiments measure P): "
@@ -192,12 +187,12 @@ def main():
     fi = fitsP.get("increments") or {}
     if "C" in fi and exp:
         V.append(f"- **n0** (fit to the per-cycle increments of P): {pm(fi['n0'], fi['sigma_n0'])} "
-                 f"against D/c2 = {fmt(exp['n0'])}: **{judge(fi['n0'], fi['sigma_n0'], exp['n0'])}**"
+                 f"against D/c2 = {fmt(exp['n0'])}: **{judgement(fi['n0'], fi['sigma_n0'], exp['n0'])}**"
                  + (f" (n0 is poorly constrained by these cycles: ±{100 * fi['sigma_n0'] / fi['n0']:.0f} %)"
                     if fi.get("sigma_n0") and fi["n0"] > 0 and fi["sigma_n0"] > 0.3 * fi["n0"] else "")
                  + ".")
         V.append(f"- **C** (same fit): {pm(fi['C'], fi['sigma_C'])} L0 against c1 (1 − D) = "
-                 f"{fmt(exp['C'])} L0: **{judge(fi['C'], fi['sigma_C'], exp['C'])}** "
+                 f"{fmt(exp['C'])} L0: **{judgement(fi['C'], fi['sigma_C'], exp['C'])}** "
                  f"(χ²/dof of the fit {fmt(fi['chi2'], '.3g')}/{fi['dof']}).")
     else:
         why = fi.get("error") or "no compaction known"
@@ -207,7 +202,7 @@ def main():
         d, s = c.get("a_fit_minus_a_univ_mean"), c.get("a_fit_minus_a_univ_sem")
         if d is not None:
             az.append(f"cycle {c['cycle']}: {fmt(c['a_fit_mean'])} vs {fmt(c['a_univ_mean'])} "
-                      f"({judged(d, s, 0.0)})")
+                      f"({judgement(d, s, 0.0, inline=True)})")
     V.append("- **a_fit against a_univ** (shape fitted to the facets against the shape the "
              "universal curve of docs/STATISTICS.md §3.4 gives for the same mean facet area; "
              "s.e. of the per-seed difference): " + ("; ".join(az) if az else "not available") + ".")

@@ -65,11 +65,8 @@ class CompressStage : public Stage {
     top_ = std::make_shared<PlaneWall>(c + hi * a, -a,
                                        LinearMotion{0.0, 0.5 * speed_, t0_, hi - half});
     lo_ = lo, hi_ = hi;
-    const Index n = ctx.model->num_nodes();
-    walls_ = {std::make_shared<WallTerm>(container_, n, k, range),
-              std::make_shared<WallTerm>(bottom_, n, k, range),
-              std::make_shared<WallTerm>(top_, n, k, range)};
-    for (const auto& w : walls_) own(ctx, w);
+    k_ = k, range_len_ = range;
+    own_walls(ctx);
     reached_ = -1;
     // The retraction starts on the stage's check grid (a chunk ends there, so the walls are
     // swapped exactly when they stand still at the target) after the pistons have arrived and
@@ -78,8 +75,17 @@ class CompressStage : public Stage {
     const double t_hold_end = t0_ + travel / (0.5 * speed_) + hold_;
     t_retract_ = t0_ + std::ceil((t_hold_end - t0_) / check_interval - 1e-9) * check_interval;
     retract_duration_ = travel / (0.5 * speed_);
-    r_start_ = r_start, r_final_ = r_final, k_ = k, range_len_ = range;
+    r_start_ = r_start, r_final_ = r_final;
     retracting_ = false;
+  }
+
+  /// Adds the container and the two pistons as they stand (container_, bottom_, top_).
+  void own_walls(StageContext& ctx) {
+    const Index n = ctx.model->num_nodes();
+    walls_ = {std::make_shared<WallTerm>(container_, n, k_, range_len_),
+              std::make_shared<WallTerm>(bottom_, n, k_, range_len_),
+              std::make_shared<WallTerm>(top_, n, k_, range_len_)};
+    for (const auto& w : walls_) own(ctx, w);
   }
 
   void start_retraction(StageContext& ctx) {
@@ -92,10 +98,7 @@ class CompressStage : public Stage {
         c, a, LinearMotion{r_final_, rate, tr, r_start_}, true);
     bottom_ = std::make_shared<PlaneWall>(c + lo_ * a, a, LinearMotion{fb, -v, tr, 0.0});
     top_ = std::make_shared<PlaneWall>(c + hi_ * a, -a, LinearMotion{ft, -v, tr, 0.0});
-    const Index n = ctx.model->num_nodes();
-    own(ctx, std::make_shared<WallTerm>(container_, n, k_, range_len_));
-    own(ctx, std::make_shared<WallTerm>(bottom_, n, k_, range_len_));
-    own(ctx, std::make_shared<WallTerm>(top_, n, k_, range_len_));
+    own_walls(ctx);
     retracting_ = true;
   }
 

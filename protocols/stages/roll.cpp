@@ -10,9 +10,9 @@
 // carries creases: stiff tethers would force every creased hinge to the roll's curvature and
 // bend those with |p| > c0 back past yield, erasing the creases of earlier cycles (measured at
 // 1500 nodes with the earlier 0.1 ks tethers: the roll cut the crease length at 0.5 c0 by up to
-// 55 L0 and left no |p| above 0.37). The axis direction is drawn at random each cycle (the experiment re-rolls the
-// flattened sheet by hand) unless `axis: fixed`. On completion the stage records the roll's axis,
-// radius and height H0 for the compress stage and removes its tethers.
+// 55 L0 and left no |p| above 0.37). The axis direction is drawn at random each cycle (the
+// experiment re-rolls the flattened sheet by hand) unless `axis: fixed`. On completion the stage
+// records the roll's axis, radius and height H0 for the compress stage and removes its tethers.
 #include "protocols/stages/common.hpp"
 #include "protocols/terms/tether_term.hpp"
 

@@ -1,5 +1,5 @@
-// Rigid walls as smooth one-sided repulsive potentials (docs/MODEL.md §11.2): plane, cylinder, sphere,
-// cone. A wall is a signed distance d(x, t) to its surface, positive on the allowed side; each
+// Rigid walls as smooth one-sided repulsive potentials (docs/MODEL.md §11.2): plane, cylinder,
+// sphere, cone. A wall is a signed distance d(x, t) to its surface, positive on the allowed side; each
 // node with d < range feels the potential
 //     U(d) = k/3 (range - d)^3,   F = -U'(d) grad d = k (range - d)^2 grad d,
 // which is C^2 at d = range (no kink for the adaptive integrators) and stiffens as a node
