@@ -13,7 +13,7 @@ DEB_PACKAGES := build-essential cmake git pkg-config libeigen3-dev libhdf5-dev h
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
   python3-matplotlib python3-numpy python3-h5py python3-scipy python3-yaml
 
-.PHONY: all deps build test test-all bench reproduce calibrate clean
+.PHONY: all deps build test test-all bench bench-axial physics-check reproduce calibrate clean
 
 all: build
 
@@ -55,6 +55,40 @@ bench: build
 	@for b in bench_assembly bench_contact; do echo "== $$b"; $(BUILD)/tests/bench/$$b || exit 1; done
 	@echo "== bench_radial"; $(BUILD)/tests/bench/bench_radial $(BENCH_RADIAL)
 	@echo "== bench_precond"; $(BUILD)/tests/bench/bench_precond --nodes $(BENCH_NODES) --thickness $(BENCH_THICKNESS) --warm-state $(BENCH_WARM)
+
+# The speed of the axial-crumpling protocol (issue 32): one cycle of protocols/axial_crumpling.yaml
+# at BENCH_NODES nodes on BENCH_THREADS threads, and where its time went, read from the run file
+# (pipeline/bench/bench_axial.py). BENCH_BASELINE=OLD_CRUMPLE_SIM times that binary alternately
+# with this build's, BENCH_REPEATS runs each, and prints the ratios of total wall. The runs and
+# summary.json stay in $(BUILD)/bench-axial.
+BENCH_THREADS ?= 2
+BENCH_SEED ?= 1
+BENCH_REPEATS ?= 1
+BENCH_BASELINE ?=
+bench-axial: build
+	$(PYTHON) pipeline/bench/bench_axial.py --binary $(SIM) --nodes $(BENCH_NODES) \
+	  --threads $(BENCH_THREADS) --seed $(BENCH_SEED) --repeats $(BENCH_REPEATS) \
+	  $(if $(BENCH_BASELINE),--baseline $(BENCH_BASELINE)) --out-dir $(BUILD)/bench-axial \
+	  --json $(BUILD)/bench-axial/summary.json
+
+# Is the physics unchanged? This build's crumple-sim against PHYSICS_OLD (a binary, required) on
+# the same sheets: the crease length and P per cycle against the seed-to-seed spread
+# (pipeline/bench/physics_check.py; runs kept in $(BUILD)/physics-check, so a rerun is quick).
+PHYSICS_OLD ?=
+PHYSICS_NODES ?= 1500
+PHYSICS_CYCLES ?= 3
+PHYSICS_SEEDS ?= 1 2 3 4
+PHYSICS_JOBS ?= 2
+ifneq ($(filter physics-check,$(MAKECMDGOALS)),)
+ifeq ($(strip $(PHYSICS_OLD)),)
+$(error make physics-check: give PHYSICS_OLD=PATH, the crumple-sim binary to compare this build's with)
+endif
+endif
+physics-check: build
+	$(PYTHON) pipeline/bench/physics_check.py --new $(SIM) --old $(PHYSICS_OLD) --analyze $(ANALYZE) \
+	  --nodes $(PHYSICS_NODES) --cycles $(PHYSICS_CYCLES) --seeds $(PHYSICS_SEEDS) \
+	  --jobs $(PHYSICS_JOBS) --threads 1 --out-dir $(BUILD)/physics-check \
+	  --json $(BUILD)/physics-check/summary.json
 
 include pipeline/reproduce.mk
 include pipeline/calibration/calibrate.mk

@@ -165,6 +165,26 @@ std::optional<IntegratorSummary> read_summary(const H5::Group& log) {
   return s;
 }
 
+// Contact and output costs as attributes of /log, beside the integrator's counters.
+void write_costs(H5::Group& log, const RunCosts& c) {
+  h5::attr(log, "contact_search_s", c.contact_search_s);
+  h5::attr(log, "contact_eval_s", c.contact_eval_s);
+  h5::attr(log, "contact_searches", std::int64_t{c.contact_searches});
+  h5::attr(log, "output_s", c.output_s);
+  h5::attr(log, "threads", std::int64_t{c.threads});
+}
+
+std::optional<RunCosts> read_costs(const H5::Group& log) {
+  if (!log.attrExists("output_s")) return std::nullopt;
+  RunCosts c;
+  c.contact_search_s = h5::attr_double(log, "contact_search_s");
+  c.contact_eval_s = h5::attr_double(log, "contact_eval_s");
+  c.contact_searches = static_cast<long>(h5::attr_int(log, "contact_searches"));
+  c.output_s = h5::attr_double(log, "output_s");
+  c.threads = static_cast<int>(h5::attr_int(log, "threads"));
+  return c;
+}
+
 template <class F>
 std::vector<double> log_column(const std::vector<LogRow>& log, F f) {
   std::vector<double> v;
@@ -223,6 +243,7 @@ void write_run_file(const std::string& path, const RunRecord& r) {
     h5::attr(g, "cycle", std::int64_t{e.cycle});
     h5::attr(g, "stage", e.stage);
     h5::attr(g, "stage_index", std::int64_t{e.stage_index});
+    h5::attr(g, "wall", e.wall);
   }
   H5::Group log = h5::group(root, "log");
   h5::write(log, "t", log_column(r.log, [](const LogRow& x) { return x.t; }));
@@ -249,6 +270,7 @@ void write_run_file(const std::string& path, const RunRecord& r) {
   h5::write(log, "e_external", log_column(r.log, [](const LogRow& x) { return x.e_external; }));
   h5::write(log, "e_kinetic", log_column(r.log, [](const LogRow& x) { return x.e_kinetic; }));
   if (r.summary) write_summary(log, *r.summary);
+  if (r.costs) write_costs(log, *r.costs);
   if (r.checkpoint) write_checkpoint(root, *r.checkpoint);
 }
 
@@ -306,6 +328,7 @@ RunRecord read_run_file(const std::string& path) {
         e.cycle = static_cast<int>(h5::attr_int(g, "cycle"));
         e.stage = h5::attr_string(g, "stage");
         e.stage_index = static_cast<int>(h5::attr_int(g, "stage_index"));
+        if (g.attrExists("wall")) e.wall = h5::attr_double(g, "wall");  // else NaN (older file)
         r.stage_ends.push_back(std::move(e));
       }
     }
@@ -337,6 +360,7 @@ RunRecord read_run_file(const std::string& path) {
       r.log.push_back(row);
     }
     r.summary = read_summary(log);
+    r.costs = read_costs(log);
     if (h5::exists(root, "checkpoint")) r.checkpoint = read_checkpoint(root);
     return r;
   } catch (const H5::Exception& e) {
@@ -348,6 +372,17 @@ void write_run_file_atomic(const std::string& path, const RunRecord& r) {
   const std::string tmp = path + ".new";
   write_run_file(tmp, r);
   std::filesystem::rename(tmp, path);
+}
+
+void write_output_seconds(const std::string& path, double output_s) {
+  H5::Exception::dontPrint();
+  try {
+    H5::H5File file(path, H5F_ACC_RDWR);
+    H5::Group log = file.openGroup("log");
+    h5::attr(log, "output_s", output_s);
+  } catch (const H5::Exception& e) {
+    throw InputError(path + ": cannot update /log@output_s (" + e.getDetailMsg() + ")");
+  }
 }
 
 void write_xdmf(const std::string& xdmf_path, const std::string& h5_name, const RunRecord& r) {

@@ -8,6 +8,7 @@
 #include "sim/integrate/step_log.hpp"
 #include "sim/mesh/mesh.hpp"
 
+#include <limits>
 #include <optional>
 
 namespace crumple {
@@ -41,6 +42,20 @@ struct StageEndRecord {
   std::string stage;    ///< stage type
   double t = 0;
   VecX p;
+  /// Wall seconds of the stage, less the run-file writing in it (FileSink::stage_end); NaN in
+  /// files written before it was stored.
+  double wall = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// What a run spent outside the integrator's own counters, for benchmarks (attributes of /log):
+/// contact handling, from ContactTerm::stats() of the pairwise contact term, and the writing of
+/// the run file. Summed over resumes like the integrator's counters.
+struct RunCosts {
+  double contact_search_s = 0;  ///< wall s in candidate-pair searches
+  double contact_eval_s = 0;    ///< wall s evaluating contact energy, force and Jacobian
+  long contact_searches = 0;    ///< searches run
+  double output_s = 0;          ///< wall s in the FileSink: frames, checkpoints, the final write
+  int threads = 1;              ///< OpenMP threads of the last process
 };
 
 struct RunRecord {
@@ -54,6 +69,7 @@ struct RunRecord {
   /// The integrator's counters over the whole run (attributes of /log); absent in files
   /// written before they were stored.
   std::optional<IntegratorSummary> summary;
+  std::optional<RunCosts> costs;  ///< absent in files written before they were stored
   std::optional<Checkpoint> checkpoint;
 };
 
@@ -63,6 +79,9 @@ void write_run_file(const std::string& path, const RunRecord& r);
 RunRecord read_run_file(const std::string& path);
 /// Writes PATH atomically: to PATH.new, then renamed.
 void write_run_file_atomic(const std::string& path, const RunRecord& r);
+/// Overwrites /log@output_s of the run file at `path`: the final write's own duration can only be
+/// stored once it is over.
+void write_output_seconds(const std::string& path, double output_s);
 /// The XDMF sidecar for ParaView: a temporal collection of the frames of `h5_name`.
 void write_xdmf(const std::string& xdmf_path, const std::string& h5_name, const RunRecord& r);
 

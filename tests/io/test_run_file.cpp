@@ -1,5 +1,6 @@
-// The run file: an exact HDF5 round trip of mesh, frames, cycles, log, meta and checkpoint;
-// older files without the logged average; bad files.
+// The run file: an exact HDF5 round trip of mesh, frames, cycles, log, meta, costs and
+// checkpoint; older files without the logged average, the stage walls or the costs; the patch of
+// output_s after the final write; bad files.
 #include "sim/core/errors.hpp"
 #include "sim/io/h5.hpp"
 #include "sim/io/run_file.hpp"
@@ -33,7 +34,7 @@ TEST(RunFile, RoundTripIsExact) {
   CycleRecord c{1, 2.5, random_vec(n3), random_vec(nh), std::vector<std::uint8_t>(nh, 1), 0.05};
   r.cycles.push_back(c);
   r.stage_ends.push_back({1, 0, "roll", 0.2, random_vec(nh)});
-  r.stage_ends.push_back({1, 1, "compress", 1.25, random_vec(nh)});
+  r.stage_ends.push_back({1, 1, "compress", 1.25, random_vec(nh), 12.5});
   LogRow row;
   row.t = 0.3, row.h = 1e-3, row.mode = 1, row.newton_iters = 2, row.cg_iters = 40, row.e_bend = 7;
   row.order = 3, row.a_ratio = 2e-3, row.a_ratio_avg = 1.5e-3;
@@ -42,6 +43,7 @@ TEST(RunFile, RoundTripIsExact) {
   sum.steps_implicit = 5, sum.steps_explicit = 7, sum.cg_iters = 123456789012;
   sum.wall_linear = 0.25;
   r.summary = sum;
+  r.costs = RunCosts{1.5, 2.25, 9876543210L, 0.125, 2};
   Checkpoint ck;
   ck.cycle = 2, ck.stage = 1, ck.in_stage = true, ck.stage_t_begin = 1.25;
   ck.state = r.frames[1].state;
@@ -77,6 +79,8 @@ TEST(RunFile, RoundTripIsExact) {
   EXPECT_EQ(q.stage_ends[1].stage_index, 1);
   EXPECT_EQ(q.stage_ends[1].cycle, 1);
   EXPECT_EQ(q.stage_ends[1].t, 1.25);
+  EXPECT_EQ(q.stage_ends[1].wall, 12.5);
+  EXPECT_TRUE(std::isnan(q.stage_ends[0].wall));  // not measured: stays NaN
   ASSERT_EQ(q.log.size(), 2u);
   EXPECT_EQ(q.log[1].cg_iters, 40);
   EXPECT_EQ(q.log[1].e_bend, 7);
@@ -88,6 +92,12 @@ TEST(RunFile, RoundTripIsExact) {
   EXPECT_EQ(q.summary->steps_explicit, 7);
   EXPECT_EQ(q.summary->cg_iters, 123456789012);
   EXPECT_EQ(q.summary->wall_linear, 0.25);
+  ASSERT_TRUE(q.costs.has_value());
+  EXPECT_EQ(q.costs->contact_search_s, 1.5);
+  EXPECT_EQ(q.costs->contact_eval_s, 2.25);
+  EXPECT_EQ(q.costs->contact_searches, 9876543210L);
+  EXPECT_EQ(q.costs->output_s, 0.125);
+  EXPECT_EQ(q.costs->threads, 2);
   ASSERT_TRUE(q.checkpoint.has_value());
   EXPECT_EQ(q.checkpoint->stage_begin.x, ck.stage_begin.x);
   EXPECT_EQ(q.checkpoint->stepper, ck.stepper);
@@ -103,19 +113,26 @@ TEST(RunFile, OlderLogWithoutTheAverageAndUnequalColumns) {
   LogRow row;
   row.t = 0.5, row.a_ratio = 1e-4, row.a_ratio_avg = 2e-4;
   r.log = {row, row, row};
+  r.stage_ends.push_back({1, 0, "roll", 0.2, VecX::Zero(r.mesh.num_hinges()), 3.0});
   const std::string path = (std::filesystem::temp_directory_path() / "crumple_oldlog.h5").string();
   write_run_file(path, r);
   {
     H5::H5File f(path, H5F_ACC_RDWR);
     H5::Group log = f.openGroup("log");
     ASSERT_GE(H5Ldelete(log.getId(), "a_ratio_avg", H5P_DEFAULT), 0);
+    H5::Group end = f.openGroup("stage_ends/000000");
+    end.removeAttr("wall");  // written before the stage walls were stored
   }
+  const RunRecord older = read_run_file(path);
+  ASSERT_EQ(older.stage_ends.size(), 1u);
+  EXPECT_TRUE(std::isnan(older.stage_ends[0].wall));
   {
     H5::H5File f(path, H5F_ACC_RDWR);
     ASSERT_GE(H5Ldelete(f.getId(), "stage_ends", H5P_DEFAULT), 0);  // written before it existed
   }
   const RunRecord q = read_run_file(path);
   EXPECT_TRUE(q.stage_ends.empty());
+  EXPECT_FALSE(q.costs.has_value());
   ASSERT_EQ(q.log.size(), 3u);
   EXPECT_TRUE(std::isnan(q.log[2].a_ratio_avg));
   EXPECT_EQ(q.log[2].a_ratio, 1e-4);
@@ -133,6 +150,23 @@ TEST(RunFile, OlderLogWithoutTheAverageAndUnequalColumns) {
               std::string::npos) << e.what();
   }
   std::filesystem::remove(path);
+}
+
+// The final write's own duration is patched into /log@output_s afterwards; the rest stays.
+TEST(RunFile, OutputSecondsPatchedAfterTheWrite) {
+  RunRecord r;
+  r.mesh = crumple::testing::grid_mesh(3, 3, 0.1, 0.1, 0.0, 1);
+  r.costs = RunCosts{0.5, 0.75, 3, 1.0, 1};
+  const std::string path = (std::filesystem::temp_directory_path() / "crumple_output_s.h5").string();
+  write_run_file(path, r);
+  write_output_seconds(path, 4.5);
+  const RunRecord q = read_run_file(path);
+  std::filesystem::remove(path);
+  ASSERT_TRUE(q.costs.has_value());
+  EXPECT_EQ(q.costs->output_s, 4.5);
+  EXPECT_EQ(q.costs->contact_eval_s, 0.75);
+  EXPECT_EQ(q.costs->contact_searches, 3);
+  EXPECT_THROW(write_output_seconds("no/such/run.h5", 1.0), InputError);
 }
 
 TEST(RunFile, UnreadableFileIsBadInput) {
