@@ -132,9 +132,9 @@ def read_figures(path):
         log = f["log"]
         t, mode = log["t"][:], log["mode"][:]
         keys = ["steps_implicit", "steps_explicit", "switches", "wall_total", "wall_assembly", "wall_linear",
-                "wall_before_step", "contact_search_s", "contact_eval_s", "contact_searches", "output_s",
-                "threads"]
+                "wall_before_step", "contact_search_s", "contact_eval_s", "contact_searches", "output_s"]
         fig = {k: attr(log, k) for k in keys}
+        fig["threads"] = attr(f["meta"], "threads")
         rej = [attr(log, k) for k in ("rejected_error", "rejected_newton", "rejected_not_spd", "rejected_other")]
         fig["rejections"] = None if None in rej else sum(rej)
         stages = read_stages(f, t, mode)

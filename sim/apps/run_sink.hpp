@@ -92,7 +92,6 @@ class FileSink : public RunSink {
       c.contact_searches += static_cast<long>(st.searches);
     }
     c.output_s += output_s_;
-    c.threads = rec_.meta.threads;
     return c;
   }
 

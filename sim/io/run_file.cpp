@@ -171,7 +171,6 @@ void write_costs(H5::Group& log, const RunCosts& c) {
   h5::attr(log, "contact_eval_s", c.contact_eval_s);
   h5::attr(log, "contact_searches", std::int64_t{c.contact_searches});
   h5::attr(log, "output_s", c.output_s);
-  h5::attr(log, "threads", std::int64_t{c.threads});
 }
 
 std::optional<RunCosts> read_costs(const H5::Group& log) {
@@ -181,7 +180,6 @@ std::optional<RunCosts> read_costs(const H5::Group& log) {
   c.contact_eval_s = h5::attr_double(log, "contact_eval_s");
   c.contact_searches = static_cast<long>(h5::attr_int(log, "contact_searches"));
   c.output_s = h5::attr_double(log, "output_s");
-  c.threads = static_cast<int>(h5::attr_int(log, "threads"));
   return c;
 }
 

@@ -55,7 +55,6 @@ struct RunCosts {
   double contact_eval_s = 0;    ///< wall s evaluating contact energy, force and Jacobian
   long contact_searches = 0;    ///< searches run
   double output_s = 0;          ///< wall s in the FileSink: frames, checkpoints, the final write
-  int threads = 1;              ///< OpenMP threads of the last process
 };
 
 struct RunRecord {

@@ -43,7 +43,7 @@ TEST(RunFile, RoundTripIsExact) {
   sum.steps_implicit = 5, sum.steps_explicit = 7, sum.cg_iters = 123456789012;
   sum.wall_linear = 0.25;
   r.summary = sum;
-  r.costs = RunCosts{1.5, 2.25, 9876543210L, 0.125, 2};
+  r.costs = RunCosts{1.5, 2.25, 9876543210L, 0.125};
   Checkpoint ck;
   ck.cycle = 2, ck.stage = 1, ck.in_stage = true, ck.stage_t_begin = 1.25;
   ck.state = r.frames[1].state;
@@ -97,7 +97,6 @@ TEST(RunFile, RoundTripIsExact) {
   EXPECT_EQ(q.costs->contact_eval_s, 2.25);
   EXPECT_EQ(q.costs->contact_searches, 9876543210L);
   EXPECT_EQ(q.costs->output_s, 0.125);
-  EXPECT_EQ(q.costs->threads, 2);
   ASSERT_TRUE(q.checkpoint.has_value());
   EXPECT_EQ(q.checkpoint->stage_begin.x, ck.stage_begin.x);
   EXPECT_EQ(q.checkpoint->stepper, ck.stepper);
@@ -156,7 +155,7 @@ TEST(RunFile, OlderLogWithoutTheAverageAndUnequalColumns) {
 TEST(RunFile, OutputSecondsPatchedAfterTheWrite) {
   RunRecord r;
   r.mesh = crumple::testing::grid_mesh(3, 3, 0.1, 0.1, 0.0, 1);
-  r.costs = RunCosts{0.5, 0.75, 3, 1.0, 1};
+  r.costs = RunCosts{0.5, 0.75, 3, 1.0};
   const std::string path = (std::filesystem::temp_directory_path() / "crumple_output_s.h5").string();
   write_run_file(path, r);
   write_output_seconds(path, 4.5);
