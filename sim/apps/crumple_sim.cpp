@@ -127,8 +127,8 @@ int run(const Options& o) {
   if (contact)
     integ.before_step = [&](const State& st) {
       if (!contact_on) return false;
-      // A search that finds the same pairs within sigma leaves the force unchanged, but a
-      // stale list may have missed some: count any search as a change.
+      // True when a re-search found a pair in range that the old list lacked: the explicit
+      // step's reused last stage (FSAL) was evaluated without it.
       return contact->update(st.x);
     };
   IntegratorStepper stepper(integ);

@@ -57,33 +57,55 @@ void ContactTerm::pair_forces(const VecX& x) const {
 
 bool ContactTerm::stale(const VecX& x) const {
   if (x_search_.size() != x.size() || settings_.skin <= 0.0) return true;
-  const double lim2 = 0.25 * settings_.skin * settings_.skin * law_.sigma * law_.sigma;
+  // Two sites that may interact have no node in common, and a site moves no more than the
+  // farthest-moved of its nodes, so a pair's distance has changed by at most d1 + d2, the two
+  // largest node displacements since the search: the list holds every pair now closer than
+  // sigma while d1 + d2 <= skin sigma.
   const Index n = static_cast<Index>(x.size() / 3);
-  int moved = 0;
-#pragma omp parallel for schedule(static) reduction(| : moved)
-  for (Index i = 0; i < n; ++i)
-    if ((node(x, i) - node(x_search_, i)).squaredNorm() > lim2) moved = 1;
-  return moved != 0;
+  double d1 = 0, d2 = 0;
+#pragma omp parallel
+  {
+    double t1 = 0, t2 = 0;  // this thread's two largest squared displacements
+#pragma omp for schedule(static) nowait
+    for (Index i = 0; i < n; ++i) {
+      const double d = (node(x, i) - node(x_search_, i)).squaredNorm();
+      if (d > t2) {
+        t2 = std::min(d, t1);
+        t1 = std::max(d, t1);
+      }
+    }
+#pragma omp critical
+    {
+      for (double d : {t1, t2})
+        if (d > d2) {
+          d2 = std::min(d, d1);
+          d1 = std::max(d, d1);
+        }
+    }
+  }
+  return std::sqrt(d1) + std::sqrt(d2) > settings_.skin * law_.sigma;
 }
 
 bool ContactTerm::update(const VecX& x) {
   ++stats_.updates;
   if (!stale(x)) return false;
-  const std::vector<std::uint64_t> old = std::move(cross_);
+  const std::vector<SitePair> old = std::move(cand_);
   search(x);
-  const bool changed = old != cross_;
-  if (changed) {
-    ++version_;
-    ++stats_.pattern_changes;
+  // Both lists are sorted by (i, j): walk them together for new pairs now in range.
+  const double sigma2 = law_.sigma * law_.sigma;
+  auto o = old.begin();
+  for (const SitePair& q : cand_) {
+    while (o != old.end() && *o < q) ++o;
+    if (o != old.end() && *o == q) continue;
+    if ((pos_.col(q[0]) - pos_.col(q[1])).squaredNorm() < sigma2) return true;
   }
-  return changed;
+  return false;
 }
 
 void ContactTerm::search(const VecX& x) {
   const auto t0 = std::chrono::steady_clock::now();
-  Eigen::Matrix3Xd pos;
-  sites_.positions(x, pos);
-  ContactPairs found = find_pairs(pos, law_.sigma * (1.0 + settings_.skin), &sites_);
+  sites_.positions(x, pos_);
+  ContactPairs found = find_pairs(pos_, law_.sigma * (1.0 + settings_.skin), &sites_);
   cand_ = std::move(found.pairs);
   stats_.last = found.stats;
   x_search_ = x;
@@ -92,6 +114,7 @@ void ContactTerm::search(const VecX& x) {
   // never zero (contact_sites.hpp), so a zero coefficient marks a padded role below.
   const Index m = static_cast<Index>(cand_.size());
   stencil_.resize(m);
+#pragma omp parallel for schedule(static)
   for (Index p = 0; p < m; ++p)
     for (int side = 0; side < 2; ++side) {
       const ContactSite& s = sites_.sites[cand_[p][side]];
@@ -127,21 +150,37 @@ void ContactTerm::search(const VecX& x) {
       entries_[e] = p;
       entry_coef_[e] = stencil_[p].coef[r];
     }
-
-  // The node pairs coupled across each candidate pair, for the pattern and change detection.
-  cross_.clear();
-  cross_.reserve(9 * static_cast<std::size_t>(m));
-  for (const PairStencil& st : stencil_)
-    for (int a = 0; a < 3; ++a)
-      for (int b = 3; b < 6; ++b)
-        if (st.coef[a] != 0.0 && st.coef[b] != 0.0)
-          cross_.push_back(pair_key(st.node[a], st.node[b]));
-  std::sort(cross_.begin(), cross_.end());
-  cross_.erase(std::unique(cross_.begin(), cross_.end()), cross_.end());
+  cross_stale_ = true;
 
   ++stats_.searches;
   stats_.search_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void ContactTerm::refresh_cross() const {
+  if (!cross_stale_) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<std::uint64_t> cross;
+  cross.reserve(9 * stencil_.size());
+  for (const PairStencil& st : stencil_)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 3; b < 6; ++b)
+        if (st.coef[a] != 0.0 && st.coef[b] != 0.0)
+          cross.push_back(pair_key(st.node[a], st.node[b]));
+  std::sort(cross.begin(), cross.end());
+  cross.erase(std::unique(cross.begin(), cross.end()), cross.end());
+  if (cross != cross_) {
+    cross_ = std::move(cross);
+    ++version_;
+  }
+  cross_stale_ = false;
+  stats_.search_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::uint64_t ContactTerm::pattern_version() const {
+  refresh_cross();
+  return version_;
 }
 
 Index ContactTerm::num_active(const VecX& x) const {
@@ -234,12 +273,14 @@ void ContactTerm::add_jacobians(const State& s, Jacobians& J) const {
 }
 
 void ContactTerm::coupled_pairs(std::vector<std::pair<Index, Index>>& out) const {
+  refresh_cross();
   for (const auto& e : mesh_->edges) out.emplace_back(e[0], e[1]);
   for (std::uint64_t key : cross_)
     out.emplace_back(static_cast<Index>(key >> 32), static_cast<Index>(key & 0xffffffffu));
 }
 
 void ContactTerm::bind(const BlockPattern& pattern) {
+  refresh_cross();
   for (std::uint64_t key : cross_)
     if (!pattern.contains(static_cast<Index>(key >> 32), static_cast<Index>(key & 0xffffffffu)))
       throw std::logic_error("ContactTerm::bind: pattern lacks a contact block");

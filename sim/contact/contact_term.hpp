@@ -5,13 +5,17 @@
 // barycentric weights. The term keeps a candidate list of site pairs closer than
 // sigma (1 + skin) at the last search (pair_search.hpp), and evaluates energy, force and
 // Jacobian on that list, counting only pairs closer than sigma at the state given. The list is
-// valid while no node has moved more than skin sigma / 2 since the search: a pair closer than
-// sigma now was then closer than sigma + skin sigma. update(x) re-searches only when that is
-// violated, so the candidate list, and with it the Jacobian pattern, changes rarely.
+// valid while the two largest node displacements since the search add up to no more than
+// skin sigma: a pair closer than sigma now was then closer than sigma + skin sigma (two sites
+// that interact share no node). update(x) re-searches only when that is
+// violated, so the candidate list, and with it the Jacobian pattern, changes rarely. The node
+// pairs coupled across candidates (the Jacobian pattern's contact blocks) are gathered only when
+// a pattern is asked for (pattern_version, coupled_pairs, bind): explicit steps never need them,
+// and their sort was half the cost of a search.
 //
 // Usage: construct, call update(x) before evaluating at x (and again whenever x has moved;
-// stale(x) tells whether it must), rebuild the BlockPattern when update() returns true (or
-// pattern_version() changed), bind(pattern), then energy / add_force / add_jacobians.
+// stale(x) tells whether it must), rebuild the BlockPattern when pattern_version() changed,
+// bind(pattern), then energy / add_force / add_jacobians.
 //
 // Assembly is lock-free and deterministic: per-pair forces and 3x3 blocks are computed in
 // parallel, then each node gathers the contributions of its pairs in pair order (a CSR from
@@ -44,7 +48,6 @@ struct ContactSettings {
 struct ContactStats {
   std::size_t updates = 0;      ///< calls to update()
   std::size_t searches = 0;     ///< grid searches run
-  std::size_t pattern_changes = 0;
   double search_seconds = 0;    ///< wall time in searches (grid + bookkeeping)
   double eval_seconds = 0;      ///< wall time evaluating energy, force and Jacobian (response)
   SearchStats last;             ///< the last search's grid figures
@@ -63,10 +66,13 @@ class ContactTerm : public ForceTerm {
   void coupled_pairs(std::vector<std::pair<Index, Index>>& out) const override;
   /// Remembers the pattern (it must stay alive while bound) and checks that it holds all blocks.
   void bind(const BlockPattern& pattern) override;
-  std::uint64_t pattern_version() const override { return version_; }
+  /// Changes whenever the set of node pairs coupled across candidate pairs changes.
+  std::uint64_t pattern_version() const override;
 
-  /// Refreshes the candidate list for positions x (3n) if needed. Returns true iff the set of
-  /// coupled node pairs changed (the caller then rebuilds the pattern).
+  /// Refreshes the candidate list for positions x (3n) if needed. Returns true iff the force at
+  /// x may differ from the one evaluated with the list before: the new list holds a pair closer
+  /// than sigma at x that the old one lacked. (Every pair of the old list in range at x is in
+  /// the new one, so no other difference changes the force.)
   bool update(const VecX& x);
   /// True when x is too far from the last search for the candidate list to be trusted.
   bool stale(const VecX& x) const;
@@ -82,6 +88,8 @@ class ContactTerm : public ForceTerm {
 
  private:
   void search(const VecX& x);
+  /// Gathers cross_ from the stencils if a search has run since, bumping version_ if it changed.
+  void refresh_cross() const;
   /// Candidate pair flattened at the search: roles 0..2 are site 1's nodes with weights +w,
   /// roles 3..5 site 2's with -w; a site with fewer than three nodes repeats its first node
   /// with weight 0, which adds an exact zero.
@@ -106,9 +114,12 @@ class ContactTerm : public ForceTerm {
   std::vector<int> row_start_;         // CSR over rows_ into entries_
   std::vector<int> entries_;           // the pair of each (node, role) entry, in pair order
   std::vector<double> entry_coef_;     // the signed weight of each entry's role
-  std::vector<std::uint64_t> cross_;   // node pairs (a < b) across candidate pairs, sorted
+  Eigen::Matrix3Xd pos_;               // site positions at the last search
+  // Node pairs (a < b) across candidate pairs, sorted; gathered on demand (refresh_cross).
+  mutable std::vector<std::uint64_t> cross_;
+  mutable bool cross_stale_ = false;
+  mutable std::uint64_t version_ = 0;
   const BlockPattern* pattern_ = nullptr;
-  std::uint64_t version_ = 0;
   mutable ContactStats stats_;  // eval_seconds is accrued in const evaluations
   // Per-pair scratch of the evaluations, kept between calls to spare an allocation of the size
   // of the candidate list per force evaluation (a term is evaluated by one caller at a time).

@@ -84,41 +84,61 @@ ContactPairs find_pairs(const Eigen::Matrix3Xd& pos, double cutoff, const Contac
     }
   }
 
+  // Each pair is seen once, from the point that comes first in cell order: its own cell after
+  // it and the 13 cells ahead of it (+x; the row at +y; the three rows at +z). Cells of one row
+  // are consecutive in the sorted order, so the five neighbourhoods are five ranges of sorted
+  // points, read in a row (the sorted positions are contiguous). The work runs over the sorted
+  // points in fixed blocks (threads' results do not depend on their number); the pairs found
+  // are then ordered by (i, j) by a counting sort on i.
   const double rc2 = cutoff * cutoff;
   const Index nblocks = (m + kBlock - 1) / kBlock;
   std::vector<std::vector<SitePair>> found(nblocks);
   std::size_t tests = 0;
 #pragma omp parallel for schedule(dynamic, 1) reduction(+ : tests)
   for (Index b = 0; b < nblocks; ++b) {
-    std::vector<Index> partners;
     auto& list = found[b];
     const Index end = std::min(m, (b + 1) * kBlock);
-    for (Index i = b * kBlock; i < end; ++i) {
-      const Vec3 p = pos.col(i);
+    for (Index k = b * kBlock; k < end; ++k) {
+      const Index i = order[k];
+      const Vec3 p = spos.col(k);
       const auto [cx, cy, cz] = coords[i];
       const int x0 = std::max(cx - 1, 0), x1 = std::min(cx + 1, g.n[0] - 1);
-      partners.clear();
-      for (int z = std::max(cz - 1, 0); z <= std::min(cz + 1, g.n[2] - 1); ++z)
-        for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, g.n[1] - 1); ++y) {
-          // Cells x0..x1 of one row are consecutive, so their points form one sorted range.
-          const int k0 = start[g.cell(x0, y, z)], k1 = start[g.cell(x1, y, z) + 1];
-          for (int k = k0; k < k1; ++k) {
-            const Index j = order[k];
-            if (j <= i) continue;
-            ++tests;
-            if ((spos.col(k) - p).squaredNorm() < rc2 && (!sites || sites->interact(i, j)))
-              partners.push_back(j);
-          }
+      const auto scan = [&](int k0, int k1) {
+        for (int kk = k0; kk < k1; ++kk) {
+          ++tests;
+          if ((spos.col(kk) - p).squaredNorm() >= rc2) continue;
+          const Index j = order[kk];
+          if (sites && !sites->interact(i, j)) continue;
+          list.push_back(i < j ? SitePair{i, j} : SitePair{j, i});
         }
-      std::sort(partners.begin(), partners.end());
-      for (Index j : partners) list.push_back({i, j});
+      };
+      scan(static_cast<int>(k) + 1, start[g.cell(x1, cy, cz) + 1]);  // own cell on, and +x
+      const auto row = [&](int y, int z) {
+        if (y < 0 || y >= g.n[1] || z >= g.n[2]) return;
+        scan(start[g.cell(x0, y, z)], start[g.cell(x1, y, z) + 1]);
+      };
+      row(cy + 1, cz);
+      for (int y = cy - 1; y <= cy + 1; ++y) row(y, cz + 1);
     }
   }
   out.stats.distance_tests = tests;
-  std::size_t total = 0;
-  for (const auto& l : found) total += l.size();
-  out.pairs.reserve(total);
-  for (const auto& l : found) out.pairs.insert(out.pairs.end(), l.begin(), l.end());
+
+  // Counting sort by i, then each i's partners by j (a handful each).
+  std::vector<int> first(m + 1, 0);
+  for (const auto& l : found)
+    for (const SitePair& q : l) ++first[q[0] + 1];
+  for (Index i = 0; i < m; ++i) first[i + 1] += first[i];
+  out.pairs.resize(first[m]);
+  {
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for (const auto& l : found)
+      for (const SitePair& q : l) out.pairs[fill[q[0]]++] = q;
+  }
+#pragma omp parallel for schedule(static, 1024)
+  for (Index i = 0; i < m; ++i)
+    if (first[i + 1] - first[i] > 1)
+      std::sort(out.pairs.begin() + first[i], out.pairs.begin() + first[i + 1],
+                [](const SitePair& u, const SitePair& v) { return u[1] < v[1]; });
   return out;
 }
 

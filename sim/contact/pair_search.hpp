@@ -3,9 +3,11 @@
 //
 // The grid spans the current bounding box of the points with cells of at least the cutoff in
 // every direction, so all partners of a point lie in its own and the 26 surrounding cells. Points
-// are counting-sorted by cell. The search runs over points in index order, in fixed blocks handed
-// to OpenMP threads; each block writes its own list, and the lists are joined in block order, so
-// the result (pairs sorted by (i, j), i < j) does not depend on the number of threads.
+// are counting-sorted by cell, and each pair is tested once, from the point first in cell order
+// against its own cell and the 13 cells ahead of it. The work runs over the sorted points in
+// fixed blocks handed to OpenMP threads, each block writing its own list; the lists are then
+// counting-sorted into (i, j) order, so the result (pairs sorted by (i, j), i < j) does not
+// depend on the number of threads.
 // The number of cells is capped at about four per point (cells grow beyond the cutoff if needed)
 // so that a sparse, spread-out configuration does not allocate a huge empty grid.
 #pragma once
@@ -19,7 +21,7 @@ using SitePair = std::array<Index, 2>;
 struct SearchStats {
   std::array<int, 3> dims{};      ///< grid cells per direction
   double cell = 0;                ///< smallest cell width
-  std::size_t distance_tests = 0; ///< candidate (i, j > i) distance evaluations
+  std::size_t distance_tests = 0; ///< distance evaluations (each unordered pair at most once)
 };
 
 struct ContactPairs {

@@ -27,13 +27,9 @@ struct SelfContact {
     model.remove_term(pairs.get());
     if (folds) model.remove_term(folds.get());
   }
-  /// Refreshes the candidate pairs at x; true if a search ran (the force may have changed),
-  /// the value Integrator::before_step returns.
-  bool update(const VecX& x) const {
-    const std::size_t n = pairs->stats().searches;
-    pairs->update(x);
-    return pairs->stats().searches != n;
-  }
+  /// Refreshes the candidate pairs at x; true if the force at x may have changed (a pair came
+  /// into range that the old list lacked), the value Integrator::before_step returns.
+  bool update(const VecX& x) const { return pairs->update(x); }
 };
 
 }  // namespace crumple

@@ -243,6 +243,25 @@ TEST(ContactTerm, CandidateCachingMatchesFreshSearch) {
   EXPECT_GT(cached.stats().searches, 1u);  // the motion did exceed the skin
 }
 
+TEST(ContactTerm, StaleOnceTheTwoLargestDisplacementsExceedTheSkin) {
+  const Mesh m = two_sheets(6, 1.0, 0.2, 2);
+  const double sigma = 0.5 * m.mean_edge_length(), skin = 0.3;
+  ContactTerm term(m, {1.0, sigma, -1, skin});
+  const VecX x0 = stack_sheets(m, 1.0, 0.5 * sigma);
+  term.update(x0);
+  const auto moved = [&](double d1, double d2) {
+    VecX x = x0;
+    x[0] += d1;            // node 0 along x
+    x[3 * 7 + 2] -= d2;    // node 7 along z
+    return x;
+  };
+  // One node alone may move up to the whole skin (pairs involving it change by at most that).
+  EXPECT_FALSE(term.stale(moved(0.9 * skin * sigma, 0.0)));
+  EXPECT_FALSE(term.stale(moved(0.6 * skin * sigma, 0.35 * skin * sigma)));
+  EXPECT_TRUE(term.stale(moved(0.6 * skin * sigma, 0.45 * skin * sigma)));
+  EXPECT_TRUE(term.stale(moved(1.1 * skin * sigma, 0.0)));
+}
+
 TEST(ContactTerm, UpdateReportsPatternChanges) {
   const Mesh m = two_sheets(6, 1.0, 0.2, 2);
   const double sigma = 0.5 * m.mean_edge_length();
@@ -251,13 +270,25 @@ TEST(ContactTerm, UpdateReportsPatternChanges) {
   EXPECT_FALSE(term.update(apart));  // no pairs before, none now
   EXPECT_TRUE(term.candidates().empty());
   const auto v0 = term.pattern_version();
+  // Within the skin but out of range: new candidates (a new pattern), the same (zero) force.
+  const VecX skin = stack_sheets(m, 1.0, 1.2 * sigma);
+  EXPECT_TRUE(term.stale(skin));
+  EXPECT_FALSE(term.update(skin));
+  EXPECT_FALSE(term.candidates().empty());
+  EXPECT_EQ(term.num_active(skin), 0);
+  const auto vs = term.pattern_version();
+  EXPECT_NE(vs, v0);
+  // In range: pairs the list lacked now push, so update() reports a changed force.
   EXPECT_TRUE(term.stale(close));
   EXPECT_TRUE(term.update(close));
-  EXPECT_NE(term.pattern_version(), v0);
+  EXPECT_NE(term.pattern_version(), vs);
   EXPECT_FALSE(term.stale(close));
   EXPECT_FALSE(term.update(close));
   const auto v1 = term.pattern_version();
-  EXPECT_TRUE(term.update(apart));
+  EXPECT_EQ(term.pattern_version(), v1);  // asking again changes nothing
+  // Apart again: the pairs in range drop out, but the old list's were the ones in range, so
+  // the force with the new list is the old list's force at x (zero) and update() says so.
+  EXPECT_FALSE(term.update(apart));
   EXPECT_NE(term.pattern_version(), v1);
   // Without a rebuilt pattern the Jacobian refuses to assemble instead of writing out of place.
   EXPECT_TRUE(term.update(close));

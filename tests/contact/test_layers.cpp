@@ -34,11 +34,11 @@ TEST(ContactInRun, FoldedLayersDoNotPassThrough) {
   double dmin = 1e300;
   Eigen::Matrix3Xd pos;
   integ.before_step = [&](const State& s) {
-    const bool searched = self.update(s.x);
+    const bool changed = self.update(s.x);
     contact->sites().positions(s.x, pos);
     for (const auto& [a, b] : contact->candidates())
       if (contact->sites().interact(a, b)) dmin = std::min(dmin, (pos.col(a) - pos.col(b)).norm());
-    return searched;
+    return changed;
   };
   IntegratorStepper stepper(integ);
   // radius 0: the tethers aim the folded half exactly onto the other one.
