@@ -41,7 +41,7 @@ struct ContactSettings {
   double ks = 1.0;     ///< contact stiffness (eq. 10; the paper uses the spring constant ks)
   double sigma = 0.0;  ///< interaction range (paper: h_eff = sqrt(8 kb / ks)); must be > 0
   int level = -1;      ///< site refinement 0..3; -1 picks auto_refinement(mesh, sigma)
-  double skin = 0.3;   ///< candidate-list skin as a fraction of sigma; 0 re-searches every update
+  double skin = 0.5;   ///< candidate-list skin as a fraction of sigma; 0 re-searches every update
 };
 
 /// Counters for reporting the cost of contact handling.

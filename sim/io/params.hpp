@@ -38,7 +38,7 @@ struct ContactParams {
   double sigma = 0;              ///< interaction range (m); 0: h_eff
   std::string refinement = "auto";  ///< auto | 0 | 1 | 2 | 3
   double stiffness = 0;          ///< contact stiffness; 0: ks
-  double skin = 0.25;            ///< candidate-list skin, fraction of sigma
+  double skin = 0.5;             ///< candidate-list skin, fraction of sigma
   bool fold_barrier = true;      ///< keep hinges from folding through themselves
 };
 
