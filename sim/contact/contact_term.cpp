@@ -62,25 +62,23 @@ bool ContactTerm::stale(const VecX& x) const {
   // largest node displacements since the search: the list holds every pair now closer than
   // sigma while d1 + d2 <= skin sigma.
   const Index n = static_cast<Index>(x.size() / 3);
-  double d1 = 0, d2 = 0;
+  // Keeps the two largest of the values offered in (a, b), a >= b.
+  const auto keep_two = [](double d, double& a, double& b) {
+    if (d <= b) return;
+    b = std::min(d, a);
+    a = std::max(d, a);
+  };
+  double d1 = 0, d2 = 0;  // squared
 #pragma omp parallel
   {
-    double t1 = 0, t2 = 0;  // this thread's two largest squared displacements
+    double t1 = 0, t2 = 0;  // this thread's
 #pragma omp for schedule(static) nowait
-    for (Index i = 0; i < n; ++i) {
-      const double d = (node(x, i) - node(x_search_, i)).squaredNorm();
-      if (d > t2) {
-        t2 = std::min(d, t1);
-        t1 = std::max(d, t1);
-      }
-    }
+    for (Index i = 0; i < n; ++i)
+      keep_two((node(x, i) - node(x_search_, i)).squaredNorm(), t1, t2);
 #pragma omp critical
     {
-      for (double d : {t1, t2})
-        if (d > d2) {
-          d2 = std::min(d, d1);
-          d1 = std::max(d, d1);
-        }
+      keep_two(t1, d1, d2);
+      keep_two(t2, d1, d2);
     }
   }
   return std::sqrt(d1) + std::sqrt(d2) > settings_.skin * law_.sigma;
