@@ -50,7 +50,33 @@ std::unique_ptr<Stage> StageRegistry::make(const YAML::Node& node, const std::st
                      "' (valid: " + valid + ")");
   }
   StageArgs args(node, file, path, st->params);
+  if (st->check) st->check(args);
   return st->make(args);
+}
+
+void StageRegistry::validate_protocol(const YAML::Node& stages, const std::string& file) const {
+  if (!stages.IsSequence() || stages.size() == 0)
+    throw InputError(file + ": protocol.stages: the protocol has no stages");
+  std::vector<std::string> provided;
+  for (std::size_t k = 0; k < stages.size(); ++k) {
+    const std::string path = "protocol.stages[" + std::to_string(k) + "]";
+    make(stages[k], file, path);
+    const StageType& st = *find(stages[k]["type"].Scalar());
+    for (const auto& need : st.needs) {
+      bool ok = false;
+      for (const auto& p : provided) ok = ok || p == need;
+      if (ok) continue;
+      std::string by;
+      for (const auto& [name, t] : types_)
+        for (const auto& p : t.provides)
+          if (p == need) by += (by.empty() ? "" : " or ") + name;
+      const YAML::Mark m = stages[k]["type"].Mark();
+      throw InputError(file + ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1) +
+                       ": " + path + ": a " + st.name + " stage needs a " + by +
+                       " stage before it in the cycle (the apparatus is reset at every cycle)");
+    }
+    provided.insert(provided.end(), st.provides.begin(), st.provides.end());
+  }
 }
 
 std::string StageRegistry::describe() const {

@@ -16,6 +16,13 @@ struct StageType {
   std::string help;             ///< one line: what the stage models
   std::vector<ParamSpec> params;
   std::function<std::unique_ptr<Stage>(const StageArgs&)> make;
+  /// Relations between the parameters (e.g. min_duration <= max_duration), checked before the
+  /// stage is built; a failure calls StageArgs::fail_both. Empty: none.
+  std::function<void(const StageArgs&)> check;
+  /// Facts of the apparatus this stage needs from an earlier stage of the same cycle (the
+  /// apparatus is reset at every cycle's start), and the facts it provides: e.g. compress needs
+  /// "rolled", which roll provides. Checked over the whole protocol before anything runs.
+  std::vector<std::string> needs, provides;
 };
 
 class StageRegistry {
@@ -29,6 +36,9 @@ class StageRegistry {
   /// Builds a stage from its YAML map; InputError with file:line on any problem.
   std::unique_ptr<Stage> make(const YAML::Node& node, const std::string& file,
                               const std::string& path) const;
+  /// Builds every stage of a cycle (`stages`, a YAML list) once and checks that each one's
+  /// `needs` are provided by a stage before it; InputError with file:line of the stage.
+  void validate_protocol(const YAML::Node& stages, const std::string& file) const;
   /// Every type with its parameters, for `crumple-sim --list-stages`.
   std::string describe() const;
 

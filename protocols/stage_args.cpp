@@ -74,6 +74,15 @@ void StageArgs::fail(const std::string& key, const std::string& what) const {
   throw InputError(where(key) + ": " + what);
 }
 
+void StageArgs::fail_both(const std::string& key, const std::string& other,
+                          const std::string& what) const {
+  // The key the file gives first is blamed; a defaulted one is named as the default.
+  const std::string a = given(key) ? where(key) : path_ + "." + key + " (default)";
+  const std::string b = given(other) ? where(other) : path_ + "." + other + " (default)";
+  if (!given(key) && given(other)) throw InputError(b + ": " + what + " (the other key: " + a + ")");
+  throw InputError(a + ": " + what + " (the other key: " + b + ")");
+}
+
 double StageArgs::number(const std::string& key) const {
   const ParamSpec& s = spec(key);
   double v;

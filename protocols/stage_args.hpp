@@ -43,6 +43,9 @@ class StageArgs {
 
   /// "file:line:col: path.key: what" as an InputError.
   [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+  /// A relation between two parameters failed: names both places (the second in parentheses).
+  [[noreturn]] void fail_both(const std::string& key, const std::string& other,
+                              const std::string& what) const;
   std::string where(const std::string& key) const;
 
  private:

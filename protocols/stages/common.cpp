@@ -12,8 +12,9 @@ std::vector<ParamSpec> common_params(double max_duration, double check_interval)
       {"max_duration", K::Number, std::to_string(max_duration),
        "cap on the stage's simulated duration (s); the run warns if the target is not reached",
        0.0, 1e30, true},
+      // Bounded below: every check ends a chunk of steps, and a vanishing interval is a hang.
       {"check_interval", K::Number, std::to_string(check_interval),
-       "simulated time between checks of the stop condition (s)", 0.0, 1e30, true},
+       "simulated time between checks of the stop condition (s)", 1e-6, 1e30},
   };
 }
 

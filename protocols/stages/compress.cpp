@@ -162,6 +162,7 @@ StageType compress_stage_type() {
   };
   for (auto& p : common_params(100.0, 0.01)) t.params.push_back(p);
   t.make = [](const StageArgs& a) { return std::make_unique<CompressStage>(a); };
+  t.needs = {"rolled"};
   return t;
 }
 

@@ -90,6 +90,10 @@ StageType radial_confine_stage_type() {
   };
   for (auto& p : common_params(1e30, 0.01)) t.params.push_back(p);
   t.make = [](const StageArgs& a) { return std::make_unique<RadialConfineStage>(a); };
+  t.check = [](const StageArgs& a) {  // radius 0 is the farthest node's distance, known later
+    if (a.number("radius") > 0 && a.number("final_radius") > a.number("radius"))
+      a.fail_both("final_radius", "radius", "the cutoff shrinks: final_radius must not exceed radius");
+  };
   return t;
 }
 

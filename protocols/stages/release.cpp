@@ -71,6 +71,10 @@ StageType release_stage_type() {
   };
   for (auto& p : common_params(2.0, 0.01)) t.params.push_back(p);
   t.make = [](const StageArgs& a) { return std::make_unique<ReleaseStage>(a); };
+  t.check = [](const StageArgs& a) {
+    if (a.number("min_duration") > a.number("max_duration"))
+      a.fail_both("min_duration", "max_duration", "min_duration must not exceed max_duration");
+  };
   return t;
 }
 

@@ -162,6 +162,7 @@ StageType roll_stage_type() {
   };
   for (auto& p : common_params(10.0, 0.01)) t.params.push_back(p);
   t.make = [](const StageArgs& a) { return std::make_unique<RollStage>(a); };
+  t.provides = {"rolled"};
   return t;
 }
 

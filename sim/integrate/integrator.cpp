@@ -148,6 +148,15 @@ void Integrator::advance_to(State& s, double t_end) {
         first = std::min(first, max_ratio * (hist_.times[0] - hist_.times[1]));
       h = step_toward(t_end - s.t, first, proposal, max_ratio,
                       rejections > 0 ? 0.0 : landing_tolerance(t_end));
+      // A step that t cannot resolve would repeat forever: fail instead (the config's floor on
+      // h_min makes this unreachable at the times of a protocol; it guards any other caller).
+      if (!(s.t + h > s.t)) {
+        std::ostringstream msg;
+        msg << "step size h = " << h << " does not advance t = " << s.t
+            << " (below its rounding); raise integrator.h_min";
+        hist_.counters.wall_total += omp_get_wtime() - wall0;
+        throw NumericalFailure(msg.str());
+      }
       a = Attempt{};
       const double wa = omp_get_wtime();
       if (implicit) {

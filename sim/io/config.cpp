@@ -5,6 +5,7 @@
 #include "sim/core/errors.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -20,10 +21,17 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 struct Context {
   std::string file;
   std::map<std::string, std::string> overrides;  // dotted key -> "key=value" as given
+  std::map<std::string, std::string>* origins = nullptr;  // Params::origins being filled
 
+  /// The --set argument that gave `dotted`, a key below it or a section above it; empty: none.
+  std::string override_of(const std::string& dotted) const {
+    for (const auto& [key, spec] : overrides)
+      if (key == dotted || dotted.rfind(key + ".", 0) == 0 || key.rfind(dotted + ".", 0) == 0)
+        return spec;
+    return {};
+  }
   std::string where(const YAML::Node& n, const std::string& dotted) const {
-    auto it = overrides.find(dotted);
-    if (it != overrides.end()) return "--set " + it->second;
+    if (const std::string spec = override_of(dotted); !spec.empty()) return "--set " + spec;
     std::ostringstream os;
     os << file << ':' << n.Mark().line + 1 << ':' << n.Mark().column + 1;
     return os.str();
@@ -117,6 +125,7 @@ class Section {
     if (!node_.IsDefined() || node_.IsNull()) return YAML::Node(YAML::NodeType::Undefined);
     const YAML::Node n = node_[key];
     if (!n.IsDefined() || n.IsNull()) return YAML::Node(YAML::NodeType::Undefined);
+    if (ctx_.origins) (*ctx_.origins)[dotted(key)] = ctx_.where(n, dotted(key));
     return n;
   }
   std::string dotted(const char* key) const { return name_ + "." + key; }
@@ -136,11 +145,41 @@ class Section {
   YAML::Node node_;
 };
 
+std::string mark_of(const std::string& file, const YAML::Mark& m) {
+  return file + ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1);
+}
+
+/// yaml-cpp keeps the first of two equal keys without a word, and takes any node as a key:
+/// both are refused here, over the whole tree, with the places of both keys.
+void check_keys(const YAML::Node& n, const std::string& file, const std::string& path) {
+  if (n.IsMap()) {
+    std::map<std::string, YAML::Mark> seen;
+    for (auto it = n.begin(); it != n.end(); ++it) {
+      const YAML::Node& k = it->first;
+      if (!k.IsScalar())
+        throw InputError(mark_of(file, k.Mark()) + ": " + (path.empty() ? "" : path + ": ") +
+                         "a key must be a plain word, got " + scalar_text(k));
+      const std::string dotted = path.empty() ? k.Scalar() : path + "." + k.Scalar();
+      const auto [at, fresh] = seen.emplace(k.Scalar(), k.Mark());
+      if (!fresh)
+        throw InputError(mark_of(file, k.Mark()) + ": " + dotted + ": duplicate key (first at " +
+                         mark_of(file, at->second) + ")");
+      check_keys(it->second, file, dotted);
+    }
+  } else if (n.IsSequence()) {
+    for (std::size_t i = 0; i < n.size(); ++i)
+      check_keys(n[i], file, path + "[" + std::to_string(i) + "]");
+  }
+}
+
 void apply_override(YAML::Node& root, const std::string& spec, Context& ctx) {
   const auto eq = spec.find('=');
   if (eq == std::string::npos || eq == 0)
     throw InputError("--set " + spec + ": expected dotted.key=value");
   const std::string key = spec.substr(0, eq), value = spec.substr(eq + 1);
+  // An empty value would read as YAML null, which every key takes as "use the default".
+  if (value.find_first_not_of(" \t") == std::string::npos)
+    throw InputError("--set " + spec + ": empty value (give " + key + "=VALUE)");
   std::vector<std::string> parts;
   std::stringstream ss(key);
   for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
@@ -151,6 +190,7 @@ void apply_override(YAML::Node& root, const std::string& spec, Context& ctx) {
   } catch (const YAML::Exception& e) {
     throw InputError("--set " + spec + ": cannot parse the value: " + e.msg);
   }
+  check_keys(parsed, "--set " + spec, key);
   // Walk down with fresh handles (yaml-cpp nodes are references; assignment would alias).
   std::vector<YAML::Node> path{root};
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
@@ -180,10 +220,12 @@ Params parse(YAML::Node root, Context& ctx) {
 
   Section mesh(root, "mesh", ctx, {"shape", "nodes", "size", "seed", "lloyd_iterations"});
   mesh.text("shape", p.mesh.shape, {"square", "disk"});
-  mesh.integer("nodes", p.mesh.nodes, 10, 1e8);
+  // Upper bounds keep a typo from a run of days or an allocation that fails (1e6 nodes is 20x
+  // the largest sheet studied; Lloyd converges in tens of iterations).
+  mesh.integer("nodes", p.mesh.nodes, 10, 1e6);
   mesh.number("size", p.mesh.size, 0, kInf, true);
   mesh.integer("seed", p.mesh.seed, 0, 9007199254740992.0);
-  mesh.integer("lloyd_iterations", p.mesh.lloyd_iterations, 0, 1e5);
+  mesh.integer("lloyd_iterations", p.mesh.lloyd_iterations, 0, 1000);
 
   Section mat(root, "material",ctx, {"thickness", "young_modulus", "density", "poisson", "ks", "kb",
                                      "mass", "mass_scale", "drag_ratio", "internal_damping_ratio"});
@@ -218,8 +260,9 @@ Params parse(YAML::Node root, Context& ctx) {
   in.integer("bdf_order", s.bdf_order, 1, 4);
   in.number("rtol", s.rtol, 0, kInf, true);
   in.number("atol", s.atol, 0, kInf, true);
-  in.number("h_init", s.h_init, 0, kInf, true);
-  in.number("h_min", s.h_min, 0, kInf, true);
+  // Steps below 1e-12 s do not advance t (of order seconds) by more than its rounding, a hang.
+  in.number("h_init", s.h_init, 1e-12, kInf);
+  in.number("h_min", s.h_min, 1e-12, kInf);
   in.number("h_max", s.h_max, 0, kInf, true);
   in.number("max_growth", s.max_growth, 1, kInf, true);
   in.number("newton_tol", s.newton_tol, 0, kInf, true);
@@ -228,7 +271,7 @@ Params parse(YAML::Node root, Context& ctx) {
   std::string solver = to_string(s.linear_solver);
   in.text("linear_solver", solver, {"two_level", "block_jacobi", "cg", "incomplete_cholesky", "ldlt"});
   s.linear_solver = parse_linear_solver(solver);
-  in.integer("block_size", s.block_size, 3, 1e6);
+  in.integer("block_size", s.block_size, 3, 600);  // dense blocks: memory ~ block_size x dofs
   in.integer("coarse_nodes", s.coarse_nodes, 3, 1e9);
   in.number("cg_tol", s.cg_tol, 0, 1, true, true);
   in.number("cg_tol_max", s.cg_tol_max, 0, 1, true, true);
@@ -296,7 +339,7 @@ Params parse(YAML::Node root, Context& ctx) {
   }
 
   Section out(root, "output", ctx, {"dt", "checkpoint_wall_s", "crease_threshold", "xdmf"});
-  out.number("dt", p.output.dt, 0, kInf, true);
+  out.number("dt", p.output.dt, 1e-6, kInf);  // every frame ends a chunk of steps
   out.number("checkpoint_wall_s", p.output.checkpoint_wall_s, 0, kInf);
   out.number("crease_threshold", p.output.crease_threshold, 0, 4, true);
   out.flag("xdmf", p.output.xdmf);
@@ -315,13 +358,36 @@ Params load_from(const std::string& text, const std::string& name,
                      std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
   }
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  check_keys(root, name, "");
   for (const auto& o : overrides) apply_override(root, o, ctx);
-  return parse(root, ctx);
+  std::map<std::string, std::string> origins;
+  ctx.origins = &origins;
+  Params p = parse(root, ctx);
+  p.origins = std::move(origins);
+  // Stage parameters are read later by the stage registry: it names the place of a stage given
+  // by --set after the --set argument itself.
+  if (const std::string spec = ctx.override_of("protocol.stages"); !spec.empty())
+    p.protocol.stages_source = "--set " + spec;
+  else
+    p.protocol.stages_source = name;
+  return p;
 }
 
 }  // namespace
 
 Params load_config(const std::string& path, const std::vector<std::string>& overrides) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const auto status = fs::status(path, ec);
+  if (fs::is_directory(status))
+    throw InputError(path + ": is a directory, not a configuration file");
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw InputError(path + ": not a regular file (a device, pipe or socket), not a configuration file");
+  // A configuration is a page of YAML; a huge file is a mistake (and would be read whole).
+  constexpr std::uintmax_t kMaxBytes = 1 << 20;
+  if (fs::is_regular_file(status) && fs::file_size(path, ec) > kMaxBytes)
+    throw InputError(path + ": " + std::to_string(fs::file_size(path, ec)) +
+                     " bytes: too large for a configuration file (at most 1 MiB)");
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the configuration file");
   std::stringstream ss;

@@ -8,6 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cstdint>
+#include <map>
 #include <string>
 
 namespace crumple {
@@ -46,6 +47,7 @@ struct ProtocolParams {
   int cycles = 1;
   double t_max = 1e30;           ///< cap on the simulated time of the run (s)
   YAML::Node stages;             ///< the stage list, validated by the stage registry
+  std::string stages_source;     ///< where the list came from: the file, or "--set protocol.stages=..."
 };
 
 struct OutputParams {
@@ -63,6 +65,14 @@ struct Params {
   ProtocolParams protocol;
   OutputParams output;
   std::string file;              ///< the config's path (for messages)
+  /// Where each key the input gave was set: dotted key -> "FILE:LINE:COL" or "--set key=value"
+  /// (for messages about relations checked after loading). Keys left at their default are absent.
+  std::map<std::string, std::string> origins;
+  /// Where a key was set, or "FILE: key (default)" when it was not.
+  std::string where(const std::string& dotted) const {
+    auto it = origins.find(dotted);
+    return it != origins.end() ? it->second + ": " + dotted : file + ": " + dotted + " (default)";
+  }
 };
 
 }  // namespace crumple

@@ -98,7 +98,9 @@ TEST(Config, IntegratorRelationsAndOpenBoundsNameTheLine) {
        "c.yaml:2:15: integrator.plastic_c0: must be >= 0 and < 2"},
       {"integrator:\n  h_min: 1\n  h_max: 0.5\n",
        "c.yaml:2:10: integrator.h_min: need integrator.h_min <= integrator.h_max"},
-      {"integrator:\n  h_init: 1e-13\n", "c.yaml:2:11: integrator.h_init: need integrator.h_min <="},
+      {"integrator:\n  h_min: 1e-6\n  h_init: 1e-7\n",
+       "c.yaml:3:11: integrator.h_init: need integrator.h_min <="},
+      {"integrator:\n  h_init: 1e-13\n", "c.yaml:2:11: integrator.h_init: must be >= 1e-12"},
       {"integrator:\n  h_max: 1e-5\n", "c.yaml:2:10: integrator.h_max: need integrator.h_init <="},
       {"integrator:\n  h_init: 0.5\n", "c.yaml:2:11: integrator.h_init: need integrator.h_init <="},
       {"integrator:\n  switch_up: 1e-3\n  switch_down: 1e-3\n",
@@ -162,4 +164,31 @@ TEST(Units, PhysicalMaterialMapsToTheModel) {
   EXPECT_NEAR(r.kappa, 1e9 * std::pow(2.5e-4, 3) / (12 * (1 - 1.0 / 9)), 1e-15);  // eq. 5
   EXPECT_NEAR(r.model.mass, 1400 * 2.5e-4 * 0.01 / 1000, 1e-20);
   EXPECT_NEAR(r.model.b_iso, 0.01 * std::sqrt(r.model.ks * r.model.mass), 1e-18);
+}
+
+// yaml-cpp would keep the first of two equal keys and accept a list as a key: both are errors
+// with the places of both keys, at any depth (a stage's parameters too).
+TEST(Config, DuplicateAndComplexKeysAreRefused) {
+  EXPECT_EQ(error_of("mesh:\n  nodes: 100\n  nodes: 200\n"),
+            "c.yaml:3:3: mesh.nodes: duplicate key (first at c.yaml:2:3)");
+  EXPECT_EQ(error_of("mesh: {}\nmesh: {}\n"), "c.yaml:2:1: mesh: duplicate key (first at c.yaml:1:1)");
+  EXPECT_TRUE(starts(error_of("protocol:\n  stages:\n    - {type: roll, duration: 1, duration: 2}\n"),
+                     "c.yaml:3:33: protocol.stages[0].duration: duplicate key (first at c.yaml:3:20)"))
+      << error_of("protocol:\n  stages:\n    - {type: roll, duration: 1, duration: 2}\n");
+  EXPECT_TRUE(starts(error_of("? [a, b]\n: 1\n"), "c.yaml:1:3: a key must be a plain word"))
+      << error_of("? [a, b]\n: 1\n");
+}
+
+// A --set error names the argument, whatever part of it is wrong; an empty value is refused
+// (YAML would read it as null, i.e. "the default").
+TEST(Config, SetErrorsNameTheArgument) {
+  EXPECT_EQ(error_of("", {"mesh.nodes="}), "--set mesh.nodes=: empty value (give mesh.nodes=VALUE)");
+  EXPECT_TRUE(starts(error_of("", {"foo.bar=1"}), "--set foo.bar=1: foo: unknown section"))
+      << error_of("", {"foo.bar=1"});
+  EXPECT_TRUE(starts(error_of("", {"mesh.nodez=1"}), "--set mesh.nodez=1: mesh.nodez: unknown key"))
+      << error_of("", {"mesh.nodez=1"});
+  const Params p = load_config_text("mesh: {nodes: 200}\n", "c.yaml", {"protocol.stages=[{type: roll}]"});
+  EXPECT_EQ(p.protocol.stages_source, "--set protocol.stages=[{type: roll}]");
+  EXPECT_EQ(p.where("mesh.nodes"), "c.yaml:1:15: mesh.nodes");
+  EXPECT_EQ(p.where("output.dt"), "c.yaml: output.dt (default)");
 }
