@@ -66,15 +66,11 @@ class FileSink : public RunSink {
     rec_.summary = integ_.summary();  // cumulative: a resumed integrator restores its counters
     rec_.costs = costs();
   }
-  /// The last write of the run (to the tmp path); its own duration is then patched into
-  /// /log@output_s, so that output_s covers every write of the file.
+  /// The last write of the run (to the tmp path). /log@output_s covers every write before it
+  /// (a file cannot hold the time of its own writing; the last one is as long as a checkpoint's).
   void write_final() {
-    const auto t0 = Clock::now();
     flush_log();
     write_run_file_atomic(path_, rec_);
-    output_s_ += since(t0);
-    rec_.costs = costs();
-    write_output_seconds(path_, rec_.costs->output_s);
   }
 
  private:

@@ -3,6 +3,11 @@
 
 #include "sim/io/h5.hpp"
 
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -24,12 +29,38 @@ void write_state(H5::Group& g, const State& s) {
   h5::write(g, "p", to_vec(s.p));
   h5::attr(g, "t", s.t);
 }
-State read_state(const H5::Group& g) {
+/// Every shape, index and value read from a file is checked against the mesh before use: a
+/// malformed file is an InputError naming the file and the dataset, never an out-of-bounds read.
+struct Checker {
+  const std::string& file;
+  [[noreturn]] void fail(const std::string& dataset, const std::string& what) const {
+    throw InputError(file + ": " + dataset + ": " + what);
+  }
+  void finite(const std::string& dataset, const VecX& v) const {
+    if (!v.allFinite()) fail(dataset, "holds non-finite values");
+  }
+  void length(const std::string& dataset, const VecX& v, Index n, const char* what) const {
+    if (v.size() != n)
+      fail(dataset, std::to_string(v.size()) + " values, expected " + std::to_string(n) + " (" +
+                        what + ")");
+  }
+};
+
+/// A stored state at `name` (a group path for messages), checked against n nodes and m hinges.
+State read_state(const H5::Group& g, const std::string& name, const Checker& check, Index n,
+                 Index m) {
   State s;
   s.x = to_eigen(h5::read_doubles(g, "x"));
   s.v = to_eigen(h5::read_doubles(g, "v"));
   s.p = to_eigen(h5::read_doubles(g, "p"));
   s.t = h5::attr_double(g, "t");
+  check.length(name + "/x", s.x, 3 * n, "3 per mesh node");
+  check.length(name + "/v", s.v, 3 * n, "3 per mesh node");
+  check.length(name + "/p", s.p, m, "one per hinge");
+  check.finite(name + "/x", s.x);
+  check.finite(name + "/v", s.v);
+  check.finite(name + "/p", s.p);
+  if (!std::isfinite(s.t)) check.fail(name + "@t", "not finite");
   return s;
 }
 std::string numbered(long k, int width) {
@@ -64,17 +95,32 @@ void write_mesh(H5::Group& root, const Mesh& m) {
   h5::attr(g, "shape", m.shape);
 }
 
-Mesh read_mesh(const H5::Group& root) {
+Mesh read_mesh(const H5::Group& root, const Checker& check) {
   H5::Group g = root.openGroup("mesh");
   std::vector<hsize_t> d;
   const auto ref = h5::read_doubles(g, "ref_positions", &d);
-  Eigen::Matrix3Xd pos(3, d.at(0));
+  if (d.size() != 2 || d[1] != 3 || d[0] < 3)
+    check.fail("/mesh/ref_positions", "expected an N x 3 array of N >= 3 node positions");
+  Eigen::Matrix3Xd pos(3, d[0]);
   for (hsize_t i = 0; i < d[0]; ++i)
     for (int k = 0; k < 3; ++k) pos(k, i) = ref[3 * i + k];
-  const auto tri = h5::read_ints(g, "triangles");
+  if (!pos.allFinite()) check.fail("/mesh/ref_positions", "holds non-finite values");
+  std::vector<hsize_t> dt;
+  const auto tri = h5::read_ints(g, "triangles", &dt);
+  if (dt.size() != 2 || dt[1] != 3 || dt[0] == 0)
+    check.fail("/mesh/triangles", "expected an M x 3 array of M >= 1 triangles");
+  const auto n = static_cast<std::int64_t>(d[0]);
+  for (const std::int32_t v : tri)
+    if (v < 0 || v >= n)
+      check.fail("/mesh/triangles", "node index " + std::to_string(v) + " out of range [0, " +
+                                        std::to_string(n) + ")");
   std::vector<std::array<Index, 3>> tris(tri.size() / 3);
   for (std::size_t t = 0; t < tris.size(); ++t) tris[t] = {tri[3 * t], tri[3 * t + 1], tri[3 * t + 2]};
-  return build_mesh(std::move(pos), std::move(tris), h5::attr_string(g, "shape"));
+  try {
+    return build_mesh(std::move(pos), std::move(tris), h5::attr_string(g, "shape"));
+  } catch (const std::invalid_argument& e) {  // e.g. an edge shared by three triangles
+    check.fail("/mesh/triangles", e.what());
+  }
 }
 
 void write_checkpoint(H5::Group& root, const Checkpoint& c) {
@@ -100,12 +146,13 @@ void write_checkpoint(H5::Group& root, const Checkpoint& c) {
                                            a.radius, a.height});
 }
 
-Checkpoint read_checkpoint(const H5::Group& root) {
+Checkpoint read_checkpoint(const H5::Group& root, const Checker& check, Index n, Index m) {
   H5::Group g = root.openGroup("checkpoint");
   Checkpoint c;
-  c.state = read_state(g.openGroup("state"));
+  c.state = read_state(g.openGroup("state"), "/checkpoint/state", check, n, m);
   c.in_stage = h5::attr_int(g, "in_stage") != 0;
-  if (c.in_stage) c.stage_begin = read_state(g.openGroup("stage_begin"));
+  if (c.in_stage)
+    c.stage_begin = read_state(g.openGroup("stage_begin"), "/checkpoint/stage_begin", check, n, m);
   c.stepper = h5::read_doubles(g, "stepper");
   c.cycle = static_cast<int>(h5::attr_int(g, "cycle"));
   c.stage = static_cast<int>(h5::attr_int(g, "stage"));
@@ -115,6 +162,9 @@ Checkpoint read_checkpoint(const H5::Group& root) {
   c.next_frame_t = h5::attr_double(g, "next_frame_t");
   c.apparatus.rolled = h5::attr_int(g, "rolled") != 0;
   const auto a = h5::read_doubles(g, "axis");
+  if (a.size() != 8) check.fail("/checkpoint/axis", "expected 8 values");
+  if (c.cycle < 1) check.fail("/checkpoint@cycle", "must be >= 1");
+  if (c.stage < 0) check.fail("/checkpoint@stage", "must be >= 0");
   c.apparatus.axis_point = Vec3(a.at(0), a.at(1), a.at(2));
   c.apparatus.axis_dir = Vec3(a.at(3), a.at(4), a.at(5));
   c.apparatus.radius = a.at(6);
@@ -193,9 +243,70 @@ std::vector<double> log_column(const std::vector<LogRow>& log, F f) {
 
 }  // namespace
 
+// The file is built in memory (HDF5's core driver, no backing store) and written out with
+// plain POSIX calls: HDF5 1.10 crashes closing a file whose writes failed (a full disk, a file
+// size limit), while a failed write() is simply an error to report.
+namespace {
+
+// A guess of the file's size, the core driver's allocation increment (so that it grows a few
+// times, not once per megabyte).
+std::size_t size_estimate(const RunRecord& r) {
+  const std::size_t n = r.mesh.num_nodes(), m = r.mesh.num_hinges();
+  const std::size_t state = 8 * (6 * n + m);
+  return (1u << 20) + r.frames.size() * state + r.cycles.size() * (8 * (3 * n + m) + m) +
+         r.stage_ends.size() * 8 * m + r.log.size() * 100 + 3 * state;
+}
+
+void write_all(H5::H5File& file, const RunRecord& r);
+
+void write_bytes(const std::string& path, const std::vector<char>& bytes) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) throw OutputError(path + ": cannot create the file (" + std::strerror(errno) + ")");
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t k = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (k < 0 && errno == EINTR) continue;
+    if (k <= 0) {
+      const std::string why = k < 0 ? std::strerror(errno) : "no progress";
+      ::close(fd);
+      ::unlink(path.c_str());
+      throw OutputError(path + ": cannot write the run file (" + why + ", " +
+                        std::to_string(done) + " of " + std::to_string(bytes.size()) +
+                        " bytes written)");
+    }
+    done += static_cast<std::size_t>(k);
+  }
+  if (::close(fd) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(path.c_str());
+    throw OutputError(path + ": cannot write the run file (" + why + " on close)");
+  }
+}
+}  // namespace
+
 void write_run_file(const std::string& path, const RunRecord& r) {
   H5::Exception::dontPrint();
-  H5::H5File file(path, H5F_ACC_TRUNC);
+  std::vector<char> image;
+  try {
+    H5::FileAccPropList fapl;
+    fapl.setCore(size_estimate(r), false);
+    H5::H5File file(path, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT, fapl);
+    write_all(file, r);
+    file.flush(H5F_SCOPE_GLOBAL);
+    const ssize_t size = H5Fget_file_image(file.getId(), nullptr, 0);
+    if (size < 0) throw OutputError(path + ": cannot build the run file's image");
+    image.resize(static_cast<std::size_t>(size));
+    if (H5Fget_file_image(file.getId(), image.data(), image.size()) != size)
+      throw OutputError(path + ": cannot build the run file's image");
+    file.close();
+  } catch (const H5::Exception& e) {
+    throw OutputError(path + ": cannot build the run file (" + e.getDetailMsg() + ")");
+  }
+  write_bytes(path, image);
+}
+
+namespace {
+void write_all(H5::H5File& file, const RunRecord& r) {
   H5::Group root = file.openGroup("/");
   H5::Group meta = h5::group(root, "meta");
   const RunMeta& m = r.meta;
@@ -270,7 +381,19 @@ void write_run_file(const std::string& path, const RunRecord& r) {
   if (r.summary) write_summary(log, *r.summary);
   if (r.costs) write_costs(log, *r.costs);
   if (r.checkpoint) write_checkpoint(root, *r.checkpoint);
+  H5::Group resumes = h5::group(root, "resumes");
+  for (std::size_t k = 0; k < r.resumes.size(); ++k) {
+    const ResumeRecord& e = r.resumes[k];
+    H5::Group g = h5::group(resumes, numbered(static_cast<long>(k), 4));
+    h5::attr(g, "t", e.t);
+    h5::attr(g, "time", e.time);
+    h5::attr(g, "threads", std::int64_t{e.threads});
+    std::string changes;
+    for (const auto& c : e.changes) changes += c + "\n";
+    h5::attr(g, "changes", changes);
+  }
 }
+}  // namespace
 
 RunRecord read_run_file(const std::string& path) {
   H5::Exception::dontPrint();
@@ -293,12 +416,14 @@ RunRecord read_run_file(const std::string& path) {
     r.meta.mass = h5::attr_double(meta, "mass");
     r.meta.h_eff = h5::attr_double(meta, "h_eff");
     r.config = h5::read_string(root, "config");
-    r.mesh = read_mesh(root);
+    const Checker check{path};
+    r.mesh = read_mesh(root, check);
+    const Index n = r.mesh.num_nodes(), m = r.mesh.num_hinges();
     H5::Group frames = root.openGroup("frames");
     for (const auto& name : h5::members(frames)) {
       H5::Group g = frames.openGroup(name);
       FrameRecord f;
-      f.state = read_state(g);
+      f.state = read_state(g, "/frames/" + name, check, n, m);
       f.stage = h5::attr_string(g, "stage");
       f.cycle = static_cast<int>(h5::attr_int(g, "cycle"));
       f.step = static_cast<long>(h5::attr_int(g, "step"));
@@ -314,6 +439,11 @@ RunRecord read_run_file(const std::string& path) {
       c.t = h5::attr_double(g, "t");
       c.cycle = static_cast<int>(h5::attr_int(g, "cycle"));
       c.crease_threshold = h5::attr_double(g, "crease_threshold");
+      const std::string at = "/cycles/" + name;
+      check.length(at + "/x", c.x, 3 * n, "3 per mesh node");
+      check.length(at + "/p", c.p, m, "one per hinge");
+      if (c.crease_mask.size() != static_cast<std::size_t>(m))
+        check.fail(at + "/crease_mask", "expected one value per hinge");
       r.cycles.push_back(std::move(c));
     }
     if (h5::exists(root, "stage_ends")) {  // files written before per-stage records lack it
@@ -327,6 +457,7 @@ RunRecord read_run_file(const std::string& path) {
         e.stage = h5::attr_string(g, "stage");
         e.stage_index = static_cast<int>(h5::attr_int(g, "stage_index"));
         if (g.attrExists("wall")) e.wall = h5::attr_double(g, "wall");  // else NaN (older file)
+        check.length("/stage_ends/" + name + "/p", e.p, m, "one per hinge");
         r.stage_ends.push_back(std::move(e));
       }
     }
@@ -359,7 +490,21 @@ RunRecord read_run_file(const std::string& path) {
     }
     r.summary = read_summary(log);
     r.costs = read_costs(log);
-    if (h5::exists(root, "checkpoint")) r.checkpoint = read_checkpoint(root);
+    if (h5::exists(root, "checkpoint")) r.checkpoint = read_checkpoint(root, check, n, m);
+    if (h5::exists(root, "resumes")) {  // files written before resumes were recorded lack it
+      H5::Group resumes = root.openGroup("resumes");
+      for (const auto& name : h5::members(resumes)) {
+        H5::Group g = resumes.openGroup(name);
+        ResumeRecord e;
+        e.t = h5::attr_double(g, "t");
+        e.time = h5::attr_string(g, "time");
+        e.threads = static_cast<int>(h5::attr_int(g, "threads"));
+        std::istringstream lines(h5::attr_string(g, "changes"));
+        for (std::string line; std::getline(lines, line);)
+          if (!line.empty()) e.changes.push_back(line);
+        r.resumes.push_back(std::move(e));
+      }
+    }
     return r;
   } catch (const H5::Exception& e) {
     throw InputError(path + ": not a readable run file (" + e.getDetailMsg() + ")");
@@ -368,24 +513,29 @@ RunRecord read_run_file(const std::string& path) {
 
 void write_run_file_atomic(const std::string& path, const RunRecord& r) {
   const std::string tmp = path + ".new";
-  write_run_file(tmp, r);
-  std::filesystem::rename(tmp, path);
+  try {
+    write_run_file(tmp, r);
+  } catch (const OutputError&) {
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);  // a half-written file is no checkpoint; PATH stays as it was
+    throw;
+  }
+  rename_or_throw(tmp, path);
 }
 
-void write_output_seconds(const std::string& path, double output_s) {
-  H5::Exception::dontPrint();
-  try {
-    H5::H5File file(path, H5F_ACC_RDWR);
-    H5::Group log = file.openGroup("log");
-    h5::attr(log, "output_s", output_s);
-  } catch (const H5::Exception& e) {
-    throw InputError(path + ": cannot update /log@output_s (" + e.getDetailMsg() + ")");
+void rename_or_throw(const std::string& from, const std::string& to) {
+  std::error_code ec;
+  std::filesystem::rename(from, to, ec);
+  if (ec) {
+    std::filesystem::remove(from, ec);
+    throw OutputError(to + ": cannot rename " + from + " to it (" + ec.message() + ")");
   }
 }
 
 void write_xdmf(const std::string& xdmf_path, const std::string& h5_name, const RunRecord& r) {
   const Index n = r.mesh.num_nodes();
-  std::ofstream out(xdmf_path + ".new");
+  std::ofstream out(xdmf_path);
+  if (!out) throw OutputError(xdmf_path + ": cannot create the XDMF file");
   out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
       << "  <Grid Name=\"sheet\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (std::size_t k = 0; k < r.frames.size(); ++k) {
@@ -406,7 +556,11 @@ void write_xdmf(const std::string& xdmf_path, const std::string& h5_name, const 
   }
   out << "  </Grid>\n </Domain>\n</Xdmf>\n";
   out.close();
-  std::filesystem::rename(xdmf_path + ".new", xdmf_path);
+  if (!out) {
+    std::error_code ec;
+    std::filesystem::remove(xdmf_path, ec);
+    throw OutputError(xdmf_path + ": cannot write the XDMF file (disk full?)");
+  }
 }
 
 }  // namespace crumple

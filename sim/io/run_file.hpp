@@ -57,6 +57,15 @@ struct RunCosts {
   double output_s = 0;          ///< wall s in the FileSink: frames, checkpoints, the final write
 };
 
+/// A resume of the run (--resume): when, on how many threads, and the configuration keys it
+/// changed ("integrator.h_min: 1e-08 -> 1e-10"; sim/apps/resume.hpp lists those that may).
+struct ResumeRecord {
+  double t = 0;        ///< simulated time the changes took effect
+  std::string time;    ///< UTC wall-clock time of the resume
+  int threads = 1;
+  std::vector<std::string> changes;
+};
+
 struct RunRecord {
   RunMeta meta;
   std::string config;  ///< resolved YAML
@@ -70,18 +79,23 @@ struct RunRecord {
   std::optional<IntegratorSummary> summary;
   std::optional<RunCosts> costs;  ///< absent in files written before they were stored
   std::optional<Checkpoint> checkpoint;
+  std::vector<ResumeRecord> resumes;  ///< absent (empty) in older files and unresumed runs
 };
 
-/// Writes the whole record to `path` (overwriting).
+/// Writes the whole record to `path` (overwriting). Throws OutputError naming the path when the
+/// file cannot be written (missing directory, permissions, a full disk).
 void write_run_file(const std::string& path, const RunRecord& r);
-/// Reads a run file back (resume, tests). Throws InputError naming the file on any problem.
+/// Reads a run file back (resume, tests). Throws InputError naming the file, and the dataset
+/// where one is at fault (a shape, an index out of range, a non-finite value), on any problem.
 RunRecord read_run_file(const std::string& path);
-/// Writes PATH atomically: to PATH.new, then renamed.
+/// Writes PATH atomically: to PATH.new, then renamed. On failure PATH.new is removed and PATH
+/// is left as it was.
 void write_run_file_atomic(const std::string& path, const RunRecord& r);
-/// Overwrites /log@output_s of the run file at `path`: the final write's own duration can only be
-/// stored once it is over.
-void write_output_seconds(const std::string& path, double output_s);
-/// The XDMF sidecar for ParaView: a temporal collection of the frames of `h5_name`.
+/// Renames `from` to `to` or throws OutputError (removing `from`).
+void rename_or_throw(const std::string& from, const std::string& to);
+/// The XDMF sidecar for ParaView: a temporal collection of the frames of `h5_name`, written to
+/// `xdmf_path` as it is (the caller writes to a temporary name and renames); OutputError on
+/// failure, with the file removed.
 void write_xdmf(const std::string& xdmf_path, const std::string& h5_name, const RunRecord& r);
 
 }  // namespace crumple

@@ -1,14 +1,16 @@
 // The run file: an exact HDF5 round trip of mesh, frames, cycles, log, meta, costs and
-// checkpoint; older files without the logged average, the stage walls or the costs; the patch of
-// output_s after the final write; bad files.
+// checkpoint; older files without the logged average, the stage walls or the costs; write
+// failures; bad files.
 #include "sim/core/errors.hpp"
 #include "sim/io/h5.hpp"
 #include "sim/io/run_file.hpp"
 #include "tests/support/grid_mesh.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <random>
 
@@ -151,21 +153,42 @@ TEST(RunFile, OlderLogWithoutTheAverageAndUnequalColumns) {
   std::filesystem::remove(path);
 }
 
-// The final write's own duration is patched into /log@output_s afterwards; the rest stays.
-TEST(RunFile, OutputSecondsPatchedAfterTheWrite) {
+// A write that fails midway (here at a file-size limit, which fails write() as a full disk
+// does) is an OutputError naming the path; the file written before stays as it was and no
+// partial file is left.
+TEST(RunFile, FailedWriteKeepsThePreviousFile) {
   RunRecord r;
-  r.mesh = crumple::testing::grid_mesh(3, 3, 0.1, 0.1, 0.0, 1);
+  r.mesh = crumple::testing::grid_mesh(12, 12, 0.1, 0.1, 0.0, 1);
   r.costs = RunCosts{0.5, 0.75, 3, 1.0};
-  const std::string path = (std::filesystem::temp_directory_path() / "crumple_output_s.h5").string();
-  write_run_file(path, r);
-  write_output_seconds(path, 4.5);
+  const std::string path = (std::filesystem::temp_directory_path() / "crumple_fsize.h5").string();
+  write_run_file_atomic(path, r);
+  const auto size_before = std::filesystem::file_size(path);
+  State s;
+  s.x = r.mesh.ref_flat();
+  s.v = VecX::Zero(s.x.size());
+  s.p = VecX::Zero(r.mesh.num_hinges());
+  for (int k = 0; k < 40; ++k) r.frames.push_back({s, "x", 1, k});
+  rlimit old{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old), 0);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit small = old;
+  small.rlim_cur = size_before + 4096;  // the bigger record cannot fit
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string message;
+  try {
+    write_run_file_atomic(path, r);
+  } catch (const OutputError& e) {
+    message = e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_NE(message.find(path + ".new: cannot write the run file"), std::string::npos) << message;
+  EXPECT_FALSE(std::filesystem::exists(path + ".new"));
+  ASSERT_EQ(std::filesystem::file_size(path), size_before);
   const RunRecord q = read_run_file(path);
+  EXPECT_TRUE(q.frames.empty());
   std::filesystem::remove(path);
-  ASSERT_TRUE(q.costs.has_value());
-  EXPECT_EQ(q.costs->output_s, 4.5);
-  EXPECT_EQ(q.costs->contact_eval_s, 0.75);
-  EXPECT_EQ(q.costs->contact_searches, 3);
-  EXPECT_THROW(write_output_seconds("no/such/run.h5", 1.0), InputError);
+  EXPECT_THROW(write_run_file("no/such/dir/run.h5", r), OutputError);
 }
 
 TEST(RunFile, UnreadableFileIsBadInput) {
