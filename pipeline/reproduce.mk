@@ -37,7 +37,7 @@ report: $(RESULTS)/REPORT.md
 $(RUNDIR)/seed%.h5: $(PROTOCOL) $(PRESET_FILE)
 	@mkdir -p $(RUNDIR)
 	$(SIM) $(PROTOCOL) -o $@ --seed $* --threads $(RUN_THREADS) $(PRESET_SETS) \
-	  $(if $(wildcard $@.tmp),--resume,)
+	  $(if $(wildcard $@.tmp),--resume,--force)
 
 $(RUNDIR)/seed%.analysis/stats.json: $(RUNDIR)/seed%.h5
 	$(ANALYZE) $< -o $(RUNDIR)/seed$*.analysis

@@ -2,6 +2,7 @@
 #include "protocols/runner.hpp"
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <sstream>
 
@@ -18,6 +19,15 @@ void set_rng_state(std::mt19937_64& rng, const std::string& text) {
   is >> rng;
   if (!is) throw InputError("checkpoint: corrupt random-number state");
 }
+
+namespace {
+std::string stopped_message(int signo, const Stage& stage, int cycle, double t) {
+  std::ostringstream os;
+  os << "stopped by signal " << signo << (signo == SIGTERM ? " (SIGTERM)" : signo == SIGINT ? " (SIGINT)" : "")
+     << " in stage " << stage.type() << " (cycle " << cycle << "), t = " << t << " s";
+  return os.str();
+}
+}  // namespace
 
 ProtocolRunner::ProtocolRunner(SheetModel& model, Stepper& stepper, StageFactory make,
                                int num_stages, SheetInfo sheet, RunnerSettings settings)
@@ -173,11 +183,15 @@ bool ProtocolRunner::run(State& s, RunSink& sink, const Checkpoint* resume) {
           finished = true;
         }
         const auto now = std::chrono::steady_clock::now();
-        if (!finished &&
-            std::chrono::duration<double>(now - last_checkpoint).count() >= cfg_.checkpoint_wall_s) {
+        const int stop = cfg_.stop_requested();
+        if (!finished && (stop || std::chrono::duration<double>(now - last_checkpoint).count() >=
+                                      cfg_.checkpoint_wall_s)) {
           sink.checkpoint(make_checkpoint(ctx, c, k, true, stage_begin, rng_begin, contact_begin));
           last_checkpoint = now;
         }
+        // A chunk ends on the fixed grid of checks and frames, so a run resumed from here takes
+        // the steps the uninterrupted one takes.
+        if (!finished && stop) throw Interrupted(stop, stopped_message(stop, *stage, c, s.t));
       }
       stage->end(ctx);
       progress(*stage, ctx, k, true);
@@ -193,6 +207,9 @@ bool ProtocolRunner::run(State& s, RunSink& sink, const Checkpoint* resume) {
         sink.checkpoint(make_checkpoint(ctx, c, k + 1, false, s, rng_begin, contact_begin));
       }
       last_checkpoint = std::chrono::steady_clock::now();
+      const bool last = c == cfg_.cycles && k + 1 == num_stages_;
+      if (const int stop = cfg_.stop_requested(); stop && !last)
+        throw Interrupted(stop, stopped_message(stop, *stage, c, s.t));
     }
   }
   return true;

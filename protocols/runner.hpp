@@ -68,6 +68,9 @@ struct RunnerSettings {
   double progress_wall_s = 2;     ///< wall seconds between progress lines
   bool quiet = false;
   std::uint64_t seed = 1;
+  /// Polled after every chunk of steps: a signal number asks the runner to write a checkpoint
+  /// and throw Interrupted (sim/core/stop_signal.hpp); 0 goes on.
+  std::function<int()> stop_requested = [] { return 0; };
 };
 
 class ProtocolRunner {
@@ -83,7 +86,8 @@ class ProtocolRunner {
 
   /// Runs the protocol from the start or from a checkpoint. Returns false if it stopped at
   /// t_max before the last cycle ended. Throws NumericalFailure (after a checkpoint) with the
-  /// stage, cycle and time in the message.
+  /// stage, cycle and time in the message, and Interrupted (after a checkpoint) when
+  /// settings.stop_requested() asks it to stop.
   bool run(State& s, RunSink& sink, const Checkpoint* resume = nullptr);
   /// Wall seconds spent in each stage type during run() (for the cycle benchmark).
   const std::map<std::string, double>& stage_wall() const { return stage_wall_; }

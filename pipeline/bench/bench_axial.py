@@ -79,7 +79,7 @@ def run_once(binary, label, k, a):
     """Runs binary once; returns its figures (read from the run file)."""
     stem = os.path.join(a.out_dir, f"{label}{k}_n{a.nodes}_t{a.threads}_s{a.seed}")
     out = stem + ".h5"
-    for stale in (out, out + ".tmp"):
+    for stale in (out, out + ".tmp", stem + ".xdmf"):
         if os.path.exists(stale):
             os.remove(stale)
     rc, wall, rss = run_child(sim_command(binary, a, out), stem + ".log")

@@ -100,6 +100,9 @@ def run_and_analyse(a, label, binary, folder, seed):
         notes.append("run kept")
     else:
         resume = os.path.exists(run + ".tmp")
+        sidecar = os.path.splitext(run)[0] + ".xdmf"
+        if os.path.exists(sidecar):  # left by a run file removed since; newer binaries refuse it
+            os.remove(sidecar)
         cmd = [binary, a.protocol, "-o", run, "--seed", str(seed), "--threads", str(a.threads), "--quiet",
                "--set", f"mesh.nodes={a.nodes}", "--set", f"protocol.cycles={a.cycles}"]
         for s in a.set:

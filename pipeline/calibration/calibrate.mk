@@ -29,7 +29,7 @@ $(CAL_DIR)/fold_n%.h5: $(CAL_PROTO)
 	@mkdir -p $(CAL_DIR)
 	$(SIM) $(CAL_PROTO) -o $@ --quiet --threads 1 \
 	  --set mesh.nodes=$(word 1,$(subst _c, ,$*)) --set integrator.plastic_c0=$(word 2,$(subst _c, ,$*)) \
-	  $(if $(wildcard $@.tmp),--resume,)
+	  $(if $(wildcard $@.tmp),--resume,--force)
 
 $(CAL_OUT)/FOLD_CALIBRATION.md: $(CAL_RUNS) pipeline/calibration/fold_calibration.py
 	@mkdir -p $(CAL_OUT)

@@ -32,7 +32,7 @@ $(RATE_DIR)/rate%.h5: $(PROTOCOL)
 	@mkdir -p $(RATE_DIR)
 	$(SIM) $(PROTOCOL) -o $@ --quiet --threads 1 --seed $(word 2,$(subst _seed, ,$*)) \
 	  --set mesh.nodes=$(RATE_NODES) --set protocol.cycles=$(RATE_CYCLES) \
-	  --set integrator.plastic_rate=$(word 1,$(subst _seed, ,$*)) $(if $(wildcard $@.tmp),--resume,)
+	  --set integrator.plastic_rate=$(word 1,$(subst _seed, ,$*)) $(if $(wildcard $@.tmp),--resume,--force)
 
 $(RATE_DIR)/%.analysis/stats.json: $(RATE_DIR)/%.h5
 	$(ANALYZE) $< -o $(RATE_DIR)/$*.analysis --bootstrap 20 > /dev/null

@@ -1,13 +1,17 @@
 // crumple-sim: runs a protocol on a sheet and writes the run file (README.md, "Running the
 // simulator"; keys in docs/CONFIG.md, file layout in docs/FILE_FORMAT.md).
-//   crumple-sim CONFIG.yaml -o RUN.h5 [--seed S] [--threads N] [--set key=value]... [--resume]
-//               [--quiet] [--list-stages]
+//   crumple-sim CONFIG.yaml -o RUN.h5 [--seed S] [--threads N] [--set key=value]...
+//               [--resume | --force] [--quiet] [--list-stages]
 // Exit codes: 0 done, 2 bad input (nothing written), 3 numerical failure (checkpoint kept in
-// RUN.h5.tmp; rerun with --resume), 1 anything else.
+// RUN.h5.tmp; rerun with --resume), 128 + N stopped by signal N after a checkpoint, 1 anything
+// else (a write failure among them: the last checkpoint is kept).
 #include "crumple/version.hpp"
 #include "protocols/integrator_stepper.hpp"
 #include "protocols/registry.hpp"
+#include "sim/apps/output_paths.hpp"
+#include "sim/apps/resume.hpp"
 #include "sim/apps/run_sink.hpp"
+#include "sim/core/stop_signal.hpp"
 #include "sim/contact/self_contact.hpp"
 #include "sim/io/config.hpp"
 #include "sim/io/units.hpp"
@@ -21,6 +25,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <sstream>
 
 using namespace crumple;
 
@@ -35,34 +40,78 @@ std::string utc_now() {
 
 struct Options {
   std::string config, output;
-  std::optional<std::uint64_t> seed;
+  std::optional<std::int64_t> seed;
   int threads = 0;
   std::vector<std::string> sets;
-  bool resume = false, quiet = false, list = false;
+  bool resume = false, force = false, quiet = false, list = false;
 };
 
-int run(const Options& o) {
+/// A protocol that stores more frames than this is a typo of output.dt (every frame is kept in
+/// memory and rewritten at every checkpoint).
+constexpr double kMaxFrames = 1e6;
+
+/// The stage list: every stage built once (parameters, relations, order) before any output;
+/// the frames the run can store at most (when every stage is bounded by its max_duration).
+void validate_protocol(const Params& p, const StageRegistry& registry) {
+  const YAML::Node& stages = p.protocol.stages;
+  registry.validate_protocol(stages, p.protocol.stages_source);
+  double cycle_max = 0;
+  for (std::size_t k = 0; k < stages.size(); ++k)
+    cycle_max += registry.make(stages[k], p.protocol.stages_source, "")->max_duration;
+  const double t_upper = std::min(p.protocol.t_max, p.protocol.cycles * cycle_max);
+  // A stage without a real cap (max_duration 1e30, the default of stages with a duration) and
+  // no t_max leave the length unknown: then only output.dt's own floor applies.
+  if (t_upper < 1e20 && t_upper / p.output.dt > kMaxFrames) {
+    std::ostringstream os;
+    os << p.where("output.dt") << ": the run may store up to " << t_upper / p.output.dt
+       << " frames (" << t_upper << " s of simulated time); at most " << kMaxFrames
+       << ", so output.dt >= " << t_upper / kMaxFrames << " s";
+    throw InputError(os.str());
+  }
+}
+
+/// The configuration of this process: the command line's, checked against the checkpoint's
+/// when resuming (resume.hpp); `rec` receives the checkpointed record, if any.
+Params load_run(const Options& o, const std::string& tmp, RunRecord& rec) {
   namespace fs = std::filesystem;
-  const std::string tmp = o.output + ".tmp";
-  RunRecord rec;
-  Params p;
-  if (o.resume && fs::exists(tmp)) {
-    rec = read_run_file(tmp);
-    // The stored resolved configuration is the run's configuration.
-    p = load_config_text(rec.config, tmp + ":/config");
-  } else {
+  Params given = load_config(o.config, o.sets);
+  if (o.seed) {
+    given.mesh.seed = static_cast<std::uint64_t>(*o.seed);
+    given.origins["mesh.seed"] = "--seed " + std::to_string(*o.seed);
+  }
+  if (!(o.resume && fs::exists(tmp))) {
     if (o.resume && !o.quiet)
       std::fprintf(stderr, "crumple-sim: nothing to resume (%s absent): starting afresh\n",
                    tmp.c_str());
-    p = load_config(o.config, o.sets);
-    if (o.seed) p.mesh.seed = *o.seed;
+    return given;
   }
+  rec = read_run_file(tmp);
+  const Params stored = load_config_text(rec.config, tmp + ":/config");
+  const std::vector<std::string> changes = resume_changes(stored, given, tmp);
+  validate_checkpoint(rec, given, tmp);
+  ResumeRecord r;
+  r.t = rec.checkpoint->state.t;
+  r.time = utc_now();
+  r.threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  r.changes = changes;
+  rec.resumes.push_back(r);
+  if (!changes.empty()) {
+    rec.config = resolved_yaml(given);  // the configuration in force from here on
+    if (!o.quiet)
+      for (const auto& c : changes)
+        std::fprintf(stderr, "crumple-sim: on resume at t = %g s: %s\n", r.t, c.c_str());
+  }
+  return given;
+}
+
+int run(const Options& o) {
+  const std::string tmp = o.output + ".tmp";
+  RunRecord rec;
+  const Params p = load_run(o, tmp, rec);
   const auto& registry = StageRegistry::builtin();
+  validate_protocol(p, registry);
   const YAML::Node& stages = p.protocol.stages;
-  if (stages.size() == 0)
-    throw InputError(p.file + ": protocol.stages: the protocol has no stages");
-  for (std::size_t k = 0; k < stages.size(); ++k)  // validate every stage before any output
-    registry.make(stages[k], p.file, "protocol.stages[" + std::to_string(k) + "]");
+  const OutputPaths paths = check_output_paths(o.output, p.output.xdmf, o.resume, o.force);
 
   if (o.threads > 0) omp_set_num_threads(o.threads);
   if (!rec.checkpoint) {
@@ -145,7 +194,8 @@ int run(const Options& o) {
   rs.checkpoint_wall_s = p.output.checkpoint_wall_s;
   rs.quiet = o.quiet;
   rs.seed = p.mesh.seed;
-  const std::string file = p.file;
+  rs.stop_requested = stop_requested;
+  const std::string file = p.protocol.stages_source;
   ProtocolRunner runner(
       model, stepper,
       [&](int k) {
@@ -175,11 +225,11 @@ int run(const Options& o) {
   rec.meta.end_time = utc_now();
   rec.meta.status = complete ? "complete" : "complete: stopped at protocol.t_max";
   sink.write_final();
-  fs::rename(tmp, o.output);
-  if (p.output.xdmf) {
-    const fs::path out(o.output);
-    write_xdmf(fs::path(out).replace_extension(".xdmf").string(), out.filename().string(), rec);
-  }
+  // Both files are complete under temporary names before either takes its final name.
+  if (!paths.xdmf.empty())
+    write_xdmf(paths.xdmf + ".new", std::filesystem::path(paths.run).filename().string(), rec);
+  rename_or_throw(paths.tmp, paths.run);
+  if (!paths.xdmf.empty()) rename_or_throw(paths.xdmf + ".new", paths.xdmf);
   if (!o.quiet) {
     std::fprintf(stderr, "crumple-sim: wrote %s (t = %g s, %zu frames, %zu cycles)\n%s",
                  o.output.c_str(), s.t, rec.frames.size(), rec.cycles.size(),
@@ -210,12 +260,22 @@ int run(const Options& o) {
 int main(int argc, char** argv) {
   Options o;
   CLI::App app{"crumple-sim: simulate a protocol of crumpling stages on an elastoplastic sheet"};
+  app.footer(
+      "Exit codes: 0 done; 2 bad input (nothing written); 3 numerical failure (checkpoint kept in\n"
+      "RUN.h5.tmp, continue with --resume); 128+N stopped by signal N (SIGTERM 143, SIGINT 130)\n"
+      "after a checkpoint; 1 anything else (e.g. a write failure; the last checkpoint is kept).");
   app.add_option("config", o.config, "protocol/config YAML file");
   app.add_option("-o,--output", o.output, "run file to write (HDF5), e.g. runs/a.h5");
-  app.add_option("--seed", o.seed, "seed of the run (mesh and protocol randomness)");
+  // 2^53: seeds are stored as YAML numbers, exact up to there.
+  app.add_option("--seed", o.seed, "seed of the run (mesh and protocol randomness), 0 to 2^53")
+      ->check(CLI::Range(std::int64_t{0}, std::int64_t{9007199254740992}));
   app.add_option("--threads", o.threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
   app.add_option("--set", o.sets, "override a config key: dotted.key=value (repeatable)");
-  app.add_flag("--resume", o.resume, "continue a killed run from RUN.h5.tmp");
+  app.add_flag("--resume", o.resume,
+               "continue a stopped run from RUN.h5.tmp; the configuration must be the run's, "
+               "except integrator tolerances, step limits and output intervals");
+  app.add_flag("--force", o.force,
+               "replace an existing RUN.h5 (and its .xdmf) and discard a pending RUN.h5.tmp");
   app.add_flag("--quiet", o.quiet, "no progress output");
   app.add_flag("--list-stages", o.list, "print every stage type with its parameters");
   try {
@@ -232,22 +292,38 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "crumple-sim: usage: crumple-sim CONFIG.yaml -o RUN.h5 [options]\n");
     return kExitBadInput;
   }
+  if (o.resume && o.force) {
+    std::fprintf(stderr, "crumple-sim: --resume and --force contradict each other\n");
+    return kExitBadInput;
+  }
+  namespace fs = std::filesystem;
   const std::string tmp = o.output + ".tmp";
+  std::error_code ec;
+  const bool tmp_before = fs::exists(tmp, ec);
+  const auto kept = [&] {
+    return fs::exists(tmp, ec) ? "crumple-sim: checkpoint kept in " + tmp + "; continue with --resume\n"
+                               : std::string();
+  };
+  install_stop_handlers();
   try {
     return run(o);
   } catch (const InputError& e) {
     std::fprintf(stderr, "crumple-sim: %s\n", e.what());
-    // Nothing half written: a fresh run leaves no file behind (a resumed one keeps its file).
-    if (!o.resume) std::filesystem::remove(tmp);
+    // Nothing half written: a checkpoint this process began is removed; one that was there
+    // before (another run's, or this run's before a resume) is never touched.
+    if (!tmp_before) fs::remove(tmp, ec);
     return kExitBadInput;
   } catch (const NumericalFailure& e) {
-    std::fprintf(stderr,
-                 "crumple-sim: numerical failure: %s\ncrumple-sim: checkpoint kept in %s; "
-                 "continue with --resume\n",
-                 e.what(), tmp.c_str());
+    std::fprintf(stderr, "crumple-sim: numerical failure: %s\n%s", e.what(), kept().c_str());
     return kExitNumerical;
+  } catch (const Interrupted& e) {
+    std::fprintf(stderr, "crumple-sim: %s\n%s", e.what(), kept().c_str());
+    return 128 + e.signal;
+  } catch (const OutputError& e) {
+    std::fprintf(stderr, "crumple-sim: cannot write: %s\n%s", e.what(), kept().c_str());
+    return kExitFailure;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "crumple-sim: error: %s\n", e.what());
+    std::fprintf(stderr, "crumple-sim: error: %s\n%s", e.what(), kept().c_str());
     return kExitFailure;
   }
 }

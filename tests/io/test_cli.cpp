@@ -1,12 +1,14 @@
 // The crumple-sim binary: bad input exits 2 with the message and writes nothing; a run killed
-// with SIGKILL and resumed gives the uninterrupted result, step log included; no final file
-// exists before the end.
+// with SIGKILL, or stopped by SIGTERM or SIGINT, and resumed gives the uninterrupted result,
+// step log included; no final file exists before the end. (tests/corpus holds the many bad
+// inputs; these are the basic ones.)
 #include "sim/io/run_file.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <csignal>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -81,35 +83,26 @@ TEST(Cli, BadInputExitsTwoAndWritesNothing) {
   EXPECT_EQ(sim("--list-stages").code, 0);
 }
 
-TEST(Cli, KilledRunResumesToTheUninterruptedResult) {
-  const fs::path cfg = write("tiny.yaml", kTiny);
-  const fs::path whole = kDir / "whole.h5", killed = kDir / "killed.h5";
-  for (const auto& p : {whole, killed}) {
-    fs::remove(p);
-    fs::remove(p.string() + ".tmp");
-  }
-  ASSERT_EQ(sim(cfg.string() + " -o " + whole.string() + " --threads 1 --quiet").code, 0);
-
-  // Start the same run and SIGKILL it once it has written a checkpoint.
+namespace {
+// Starts the tiny run to `out`, sends `signo` once it has written a checkpoint, and returns the
+// wait status.
+int interrupt_run(const fs::path& cfg, const fs::path& out, int signo) {
   const pid_t pid = fork();
   if (pid == 0) {
-    execl(CRUMPLE_SIM, CRUMPLE_SIM, cfg.c_str(), "-o", killed.c_str(), "--threads", "1", "--quiet",
+    execl(CRUMPLE_SIM, CRUMPLE_SIM, cfg.c_str(), "-o", out.c_str(), "--threads", "1", "--quiet",
           static_cast<char*>(nullptr));
     _exit(127);
   }
-  const fs::path tmp = killed.string() + ".tmp";
+  const fs::path tmp = out.string() + ".tmp";
   for (int i = 0; i < 2000 && !fs::exists(tmp); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  kill(pid, SIGKILL);  // the .tmp appears (atomically) only with a checkpoint in it
+  kill(pid, signo);  // the .tmp appears (atomically) only with a checkpoint in it
   int status = 0;
   waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before it could be killed";
-  EXPECT_FALSE(fs::exists(killed)) << "a final file exists before completion";
-  ASSERT_TRUE(fs::exists(tmp));
+  return status;
+}
 
-  const Result r = sim(cfg.string() + " -o " + killed.string() + " --threads 1 --quiet --resume");
-  ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_FALSE(fs::exists(tmp));
-  const RunRecord a = read_run_file(whole.string()), b = read_run_file(killed.string());
+// The resumed run `b` took exactly the steps of the uninterrupted `a`.
+void expect_same_run(const RunRecord& a, const RunRecord& b) {
   ASSERT_TRUE(a.checkpoint && b.checkpoint);
   EXPECT_EQ(a.checkpoint->state.t, b.checkpoint->state.t);
   EXPECT_EQ(a.checkpoint->state.x, b.checkpoint->state.x);
@@ -142,5 +135,43 @@ TEST(Cli, KilledRunResumesToTheUninterruptedResult) {
     }
     EXPECT_TRUE(x.mode == 0 || x.mode == 1) << "log row " << k;
     EXPECT_TRUE(std::isfinite(x.a_ratio_avg) && x.a_ratio_avg >= 0) << "log row " << k;
+  }
+}
+
+}  // namespace
+
+// SIGKILL ends the run at once; SIGTERM (a scheduler's time limit) and SIGINT (Ctrl-C) let it
+// write a checkpoint at the end of its chunk of steps and exit 128 + the signal. Either way no
+// final file exists, and --resume gives the uninterrupted result.
+TEST(Cli, InterruptedRunResumesToTheUninterruptedResult) {
+  const fs::path cfg = write("tiny.yaml", kTiny);
+  const fs::path whole = kDir / "whole.h5";
+  fs::remove(whole);
+  fs::remove(whole.string() + ".xdmf");
+  fs::remove(kDir / "whole.xdmf");
+  ASSERT_EQ(sim(cfg.string() + " -o " + whole.string() + " --threads 1 --quiet").code, 0);
+  const RunRecord a = read_run_file(whole.string());
+  for (const int signo : {SIGKILL, SIGTERM, SIGINT}) {
+    SCOPED_TRACE(strsignal(signo));
+    const fs::path out = kDir / ("stopped" + std::to_string(signo) + ".h5");
+    const fs::path tmp = out.string() + ".tmp";
+    for (const auto& p : {out, tmp, fs::path(out).replace_extension(".xdmf")}) fs::remove(p);
+    const int status = interrupt_run(cfg, out, signo);
+    if (signo == SIGKILL) {
+      ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before it could be killed";
+    } else {
+      ASSERT_TRUE(WIFEXITED(status));
+      ASSERT_EQ(WEXITSTATUS(status), 128 + signo) << "the run finished before the signal?";
+    }
+    EXPECT_FALSE(fs::exists(out)) << "a final file exists before completion";
+    ASSERT_TRUE(fs::exists(tmp));
+    const Result r = sim(cfg.string() + " -o " + out.string() + " --threads 1 --quiet --resume");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_FALSE(fs::exists(tmp));
+    const RunRecord b = read_run_file(out.string());
+    expect_same_run(a, b);
+    ASSERT_EQ(b.resumes.size(), 1u);
+    EXPECT_TRUE(b.resumes[0].changes.empty());
+    EXPECT_GT(b.resumes[0].t, 0.0);
   }
 }

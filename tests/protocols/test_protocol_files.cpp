@@ -23,7 +23,7 @@ TEST(ProtocolFiles, EveryFileRunsOnATinySheet) {
     fs::remove(out);
     const std::string cmd = std::string(CRUMPLE_SIM) + " " + entry.path().string() + " -o " +
                             out.string() +
-                            " --quiet --threads 1 --set mesh.nodes=80 --set protocol.t_max=0.08"
+                            " --quiet --force --threads 1 --set mesh.nodes=80 --set protocol.t_max=0.08"
                             " --set output.dt=0.02";
     SCOPED_TRACE(entry.path().string());
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
@@ -46,7 +46,7 @@ TEST(ProtocolFiles, AxialCycleNeverPassesThroughItself) {
   fs::remove(out);
   const std::string cmd = std::string(CRUMPLE_SIM) + " protocols/axial_crumpling.yaml -o " +
                           out.string() +
-                          " --quiet --threads 1 --seed 2 --set mesh.nodes=300"
+                          " --quiet --force --threads 1 --seed 2 --set mesh.nodes=300"
                           " --set protocol.cycles=1 --set output.dt=0.02";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
   const RunRecord r = read_run_file(out.string());

@@ -1,0 +1,95 @@
+// Resume policy (resume.hpp).
+#include "sim/apps/resume.hpp"
+
+#include "protocols/integrator_stepper.hpp"
+#include "sim/io/config.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace crumple {
+
+const std::vector<std::string> kResumableKeys = {
+    "integrator.rtol",       "integrator.atol",           "integrator.h_init",
+    "integrator.h_min",      "integrator.h_max",          "integrator.max_growth",
+    "integrator.newton_tol", "integrator.newton_max_iters", "integrator.newton_target",
+    "integrator.cg_tol",     "integrator.cg_tol_max",     "integrator.cg_max_iters",
+    "integrator.explicit_rtol", "output.dt",              "output.checkpoint_wall_s",
+};
+
+namespace {
+
+// The resolved configuration as dotted key -> value text; a list (the stages) is one value.
+void flatten(const YAML::Node& n, const std::string& path, std::map<std::string, std::string>& out) {
+  if (n.IsMap()) {
+    for (auto it = n.begin(); it != n.end(); ++it)
+      flatten(it->second, path.empty() ? it->first.Scalar() : path + "." + it->first.Scalar(), out);
+  } else {
+    YAML::Emitter e;
+    e << YAML::Flow << n;
+    out[path] = e.c_str();
+  }
+}
+
+std::map<std::string, std::string> keys_of(const Params& p) {
+  std::map<std::string, std::string> out;
+  flatten(YAML::Load(resolved_yaml(p)), "", out);
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> resume_changes(const Params& stored, const Params& given,
+                                        const std::string& tmp) {
+  const auto a = keys_of(stored), b = keys_of(given);
+  std::vector<std::string> changes, refused;
+  for (const auto& [key, old_value] : a) {
+    const auto it = b.find(key);
+    const std::string new_value = it == b.end() ? "(absent)" : it->second;
+    if (new_value == old_value) continue;
+    const std::string line = key + ": " + old_value + " -> " + new_value;
+    if (std::find(kResumableKeys.begin(), kResumableKeys.end(), key) != kResumableKeys.end())
+      changes.push_back(line);
+    else
+      refused.push_back(given.where(key) + ": " + old_value + " in the run, " + new_value +
+                        " given");
+  }
+  if (!refused.empty()) {
+    std::string msg = tmp + ": --resume: the configuration given differs from the run's where it "
+                            "cannot change on resume:";
+    for (const auto& r : refused) msg += "\n  " + r;
+    msg += "\n(only integrator tolerances and step limits and the output intervals may change; "
+           "the run's configuration is " + tmp + ":/config; --force starts the run afresh)";
+    throw InputError(msg);
+  }
+  return changes;
+}
+
+void validate_checkpoint(const RunRecord& rec, const Params& p, const std::string& tmp) {
+  if (!rec.checkpoint) throw InputError(tmp + ": /checkpoint: missing (not a resumable run file)");
+  const Checkpoint& c = *rec.checkpoint;
+  const auto fail = [&](const std::string& what) { throw InputError(tmp + ": " + what); };
+  if (c.cycle > p.protocol.cycles + 1)
+    fail("/checkpoint@cycle: " + std::to_string(c.cycle) + " beyond the protocol's " +
+         std::to_string(p.protocol.cycles) + " cycles");
+  if (c.stage >= static_cast<int>(p.protocol.stages.size()))
+    fail("/checkpoint@stage: " + std::to_string(c.stage) + " but the protocol has " +
+         std::to_string(p.protocol.stages.size()) + " stages");
+  IntegratorHistory h;
+  try {
+    h = unflatten_history(c.stepper);
+  } catch (const InputError& e) {
+    fail(std::string("/checkpoint/stepper: ") + e.what());
+  }
+  const Index n = rec.mesh.num_nodes(), m = rec.mesh.num_hinges();
+  for (std::size_t k = 0; k < h.times.size(); ++k)
+    if (h.xs[k].size() != 3 * n || h.vs[k].size() != 3 * n || h.ps[k].size() != m)
+      fail("/checkpoint/stepper: history point " + std::to_string(k) +
+           " does not fit the mesh (" + std::to_string(n) + " nodes, " + std::to_string(m) +
+           " hinges)");
+  if (h.mode != IntegrationMode::Implicit && h.mode != IntegrationMode::Explicit)
+    fail("/checkpoint/stepper: unknown integration mode");
+  if (!(h.h > 0) || !std::isfinite(h.h)) fail("/checkpoint/stepper: step size not positive");
+}
+
+}  // namespace crumple

@@ -1,0 +1,29 @@
+// What `crumple-sim --resume` accepts (README.md, "Checkpoints and resume"): the checkpoint must
+// fit the run's mesh and protocol, and the configuration given on the command line must be the
+// run's own except for the keys that steer the numerics or the output without changing the
+// problem (kResumableKeys). Those are applied from the checkpoint on and recorded in /resumes.
+#pragma once
+
+#include "sim/io/params.hpp"
+#include "sim/io/run_file.hpp"
+
+#include <string>
+#include <vector>
+
+namespace crumple {
+
+/// Dotted keys that may differ on resume: tolerances, step limits and iteration caps of the
+/// integrator, and the output and checkpoint intervals. (Threads are a command-line option.)
+extern const std::vector<std::string> kResumableKeys;
+
+/// The keys whose values differ between `stored` (the run's configuration) and `given` (the
+/// command line's), as "key: OLD -> NEW", if all of them are resumable; otherwise an InputError
+/// naming `tmp`, where each offending new value was set, and both values.
+std::vector<std::string> resume_changes(const Params& stored, const Params& given,
+                                        const std::string& tmp);
+
+/// Checks the stored checkpoint against the protocol of `p` (cycle and stage in range) and its
+/// integrator history against the mesh (vector lengths); InputError naming `tmp` and the dataset.
+void validate_checkpoint(const RunRecord& rec, const Params& p, const std::string& tmp);
+
+}  // namespace crumple
