@@ -16,17 +16,17 @@ namespace fs = std::filesystem;
 
 // Absent or a regular file; anything else (a directory, a device such as /dev/null, a pipe)
 // would be replaced or fail only when the run ends.
-void regular_or_absent(const std::string& path, const std::string& what) {
+void regular_or_absent(const std::string& run, const std::string& path, const std::string& what) {
   std::error_code ec;
   const auto st = fs::symlink_status(path, ec);
   if (!fs::exists(st)) return;
-  if (fs::is_directory(st)) throw InputError("-o " + path + ": " + what + " is a directory");
+  if (fs::is_directory(st)) throw InputError("-o " + run + ": " + what + " is a directory");
   if (fs::is_symlink(st)) {
     if (fs::is_regular_file(fs::status(path, ec))) return;
-    throw InputError("-o " + path + ": " + what + " is a link to something not a regular file");
+    throw InputError("-o " + run + ": " + what + " is a link to something not a regular file");
   }
   if (!fs::is_regular_file(st))
-    throw InputError("-o " + path + ": " + what +
+    throw InputError("-o " + run + ": " + what +
                      " is not a regular file (a device, pipe or socket); give a path for a new file");
 }
 
@@ -58,9 +58,9 @@ OutputPaths check_output_paths(const std::string& run, bool xdmf, bool resume, b
     throw InputError("-o " + run +
                      ": the XDMF sidecar would overwrite the run file; name the run file .h5 "
                      "(or set output.xdmf: false)");
-  regular_or_absent(out.run, "the run file");
-  regular_or_absent(out.tmp, "the checkpoint " + out.tmp);
-  if (xdmf) regular_or_absent(out.xdmf, "the XDMF sidecar " + out.xdmf);
+  regular_or_absent(run, out.run, "the run file");
+  regular_or_absent(run, out.tmp, "the checkpoint " + out.tmp);
+  if (xdmf) regular_or_absent(run, out.xdmf, "the XDMF sidecar " + out.xdmf);
   writable_directory(run);
   std::error_code ec;
   if (!force && fs::exists(out.run, ec))

@@ -19,15 +19,31 @@ const std::vector<std::string> kResumableKeys = {
 
 namespace {
 
+// One text per value whatever its YAML style (block or flow, key order): maps with sorted keys.
+std::string canonical(const YAML::Node& n) {
+  if (n.IsScalar()) return n.Scalar();
+  if (n.IsSequence()) {
+    std::string s;
+    for (const auto& x : n) s += (s.empty() ? "" : ", ") + canonical(x);
+    return "[" + s + "]";
+  }
+  if (n.IsMap()) {
+    std::map<std::string, std::string> kv;
+    for (auto it = n.begin(); it != n.end(); ++it) kv[it->first.Scalar()] = canonical(it->second);
+    std::string s;
+    for (const auto& [k, v] : kv) s += (s.empty() ? "" : ", ") + k + ": " + v;
+    return "{" + s + "}";
+  }
+  return "~";
+}
+
 // The resolved configuration as dotted key -> value text; a list (the stages) is one value.
 void flatten(const YAML::Node& n, const std::string& path, std::map<std::string, std::string>& out) {
-  if (n.IsMap()) {
+  if (n.IsMap() && path != "protocol.stages") {
     for (auto it = n.begin(); it != n.end(); ++it)
       flatten(it->second, path.empty() ? it->first.Scalar() : path + "." + it->first.Scalar(), out);
   } else {
-    YAML::Emitter e;
-    e << YAML::Flow << n;
-    out[path] = e.c_str();
+    out[path] = canonical(n);
   }
 }
 

@@ -97,7 +97,8 @@ class Section {
       ctx_.fail(n, dotted(key), "expected a whole number, got " + scalar_text(n));
     if (v < lo || v > hi) {
       std::ostringstream os;
-      os << "must be between " << lo << " and " << hi << ", got " << n.Scalar();
+      os << "must be between " << static_cast<long long>(lo) << " and "
+         << static_cast<long long>(hi) << ", got " << n.Scalar();
       ctx_.fail(n, dotted(key), os.str());
     }
     out = static_cast<Int>(v);
