@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstring>
@@ -174,4 +175,34 @@ TEST(Cli, InterruptedRunResumesToTheUninterruptedResult) {
     EXPECT_TRUE(b.resumes[0].changes.empty());
     EXPECT_GT(b.resumes[0].t, 0.0);
   }
+}
+
+// A run that failed numerically (exit 3, here: a step limit the first step cannot meet) goes on
+// with corrected integrator settings: --resume applies them, records them in /resumes, and
+// refuses a change of the problem itself.
+TEST(Cli, FailedRunResumesWithCorrectedStepLimits) {
+  const fs::path cfg = write("tiny.yaml", kTiny);
+  const fs::path out = kDir / "failed.h5";
+  const fs::path tmp = out.string() + ".tmp";
+  for (const auto& p : {out, tmp, fs::path(out).replace_extension(".xdmf")}) fs::remove(p);
+  const std::string base = cfg.string() + " -o " + out.string() + " --threads 1 --quiet" +
+                           " --set integrator.explicit_h_start=1e-9";
+  const Result failed = sim(base + " --set integrator.h_min=0.01 --set integrator.h_init=0.01");
+  ASSERT_EQ(failed.code, 3) << failed.err;
+  EXPECT_NE(failed.err.find("checkpoint kept in " + tmp.string()), std::string::npos) << failed.err;
+  ASSERT_TRUE(fs::exists(tmp));
+  const Result changed = sim(base + " --resume --set mesh.nodes=150");
+  EXPECT_EQ(changed.code, 2);
+  EXPECT_NE(changed.err.find("--set mesh.nodes=150: mesh.nodes: 120 in the run, 150 given"),
+            std::string::npos) << changed.err;
+  ASSERT_TRUE(fs::exists(tmp)) << "a refused resume must keep the checkpoint";
+  const Result resumed = sim(base + " --resume");
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  const RunRecord r = read_run_file(out.string());
+  EXPECT_EQ(r.meta.status, "complete");
+  ASSERT_EQ(r.resumes.size(), 1u);
+  const auto& c = r.resumes[0].changes;
+  EXPECT_NE(std::find(c.begin(), c.end(), "integrator.h_min: 0.01 -> 9.9999999999999998e-13"), c.end())
+      << (c.empty() ? "" : c[0]);
+  EXPECT_EQ(r.resumes[0].t, 0.0);
 }
