@@ -3,8 +3,8 @@
 //
 //   crumple-analyze RUN.h5 [-o DIR] [--threshold-c0 F | --threshold P] [--px-per-cm R] ...
 //
-// Exit codes: 0 success, 2 bad input (arguments or run file; nothing is written), 1 anything
-// else.
+// Exit codes: 0 success, 2 bad input (arguments, run file or output folder; nothing is
+// written), 1 anything else (an earlier output folder is then left as it was).
 #include "analysis/io/run_reader.hpp"
 #include "analysis/run/analyze_run.hpp"
 #include "analysis/run/write_results.hpp"
@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
   std::string run_path, out_dir;
   CLI::App app{"crumple-analyze: crease length, crease maps, facet segmentation and fits of a "
                "crumple run file (writes stats.json, CSVs and PNGs)"};
+  app.footer("Exit codes: 0 done; 2 bad input (arguments, run file or output folder: nothing is "
+             "written); 1 any other error (an earlier output folder is left as it was).");
   app.add_option("run", run_path, "run file (RUN.h5) written by crumple-sim")->required();
   app.add_option("-o,--output", out_dir,
                  "output folder (default: the run file's name with .h5 replaced by .analysis)");
@@ -65,6 +67,7 @@ int main(int argc, char** argv) {
     const RunData run = read_run(run_path);
     if (out_dir.empty())
       out_dir = std::filesystem::path(run_path).replace_extension(".analysis").string();
+    check_output_dir(out_dir);
     const RunAnalysis res = analyze_run(run, opt);
     for (const auto& w : res.warnings) std::cerr << "crumple-analyze: warning: " << w << "\n";
     write_results(out_dir, run, res, opt);

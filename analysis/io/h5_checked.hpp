@@ -12,6 +12,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -54,6 +58,30 @@ class Reader {
     return out;
   }
 
+  /// Fails naming the dataset when a value read from it is NaN or infinite: every number the
+  /// analysis reads from a run file is a position, length or curvature, and a non-finite one
+  /// would pass through the rasteriser and the fits as garbage.
+  void require_finite(const std::vector<double>& values, const std::string& dataset) const {
+    const auto bad = std::find_if(values.begin(), values.end(),
+                                  [](double v) { return !std::isfinite(v); });
+    if (bad == values.end()) return;
+    const auto count = std::count_if(bad, values.end(), [](double v) { return !std::isfinite(v); });
+    fail(dataset + " holds " + std::to_string(count) + " non-finite value" +
+         (count == 1 ? "" : "s") + " (first at element " +
+         std::to_string(bad - values.begin()) + ")");
+  }
+
+  /// Fails naming the dataset when an index read from it is outside [0, size).
+  template <std::size_t K>
+  void require_indices(const std::vector<std::array<std::int32_t, K>>& rows, std::size_t size,
+                       const std::string& dataset) const {
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      for (auto v : rows[i])
+        if (v < 0 || static_cast<std::size_t>(v) >= size)
+          fail(dataset + " row " + std::to_string(i) + " holds index " + std::to_string(v) +
+               ", outside [0, " + std::to_string(size) + ")");
+  }
+
   /// Row count of a 2-D dataset with a fixed column count (the count that defines a size).
   hsize_t rows(const H5::Group& g, const std::string& where, const std::string& name,
                hsize_t cols) const {
@@ -93,6 +121,22 @@ class Reader {
   std::string path_;
 };
 
+/// A number as a reader would write it: 1e+30, 0.25, NaN (the sign of a NaN means nothing).
+inline std::string format_number(double v) {
+  if (std::isnan(v)) return "NaN";
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
+template <std::size_t K, class T>
+std::vector<T> flat(const std::vector<std::array<T, K>>& rows) {
+  std::vector<T> out;
+  out.reserve(rows.size() * K);
+  for (const auto& r : rows) out.insert(out.end(), r.begin(), r.end());
+  return out;
+}
+
 template <std::size_t K, class T>
 std::vector<std::array<T, K>> as_rows(const std::vector<T>& flat) {
   std::vector<std::array<T, K>> out(flat.size() / K);
@@ -101,10 +145,15 @@ std::vector<std::array<T, K>> as_rows(const std::vector<T>& flat) {
   return out;
 }
 
-/// Group names made of digits only ("0001", "000000"); anything else is not a record.
-inline bool parse_counter(const std::string& name, int& value) {
-  if (name.empty() || name.size() > 9 || !std::all_of(name.begin(), name.end(), ::isdigit))
+/// Group names made of digits only ("0001", "000000") are records; anything else is not. A
+/// record number beyond what a run can reach (over nine digits) is a damaged file, not a name
+/// to skip: `r` fails naming the group.
+inline bool parse_counter(const std::string& name, int& value, const Reader& r,
+                          const std::string& parent) {
+  if (name.empty() || !std::all_of(name.begin(), name.end(),
+                                   [](unsigned char c) { return std::isdigit(c) != 0; }))
     return false;
+  if (name.size() > 9) r.fail(parent + "/" + name + ": record number out of range");
   value = std::stoi(name);
   return true;
 }

@@ -64,7 +64,11 @@ RunData read_run(const std::string& path) {
       run.meta = read_attributes(file.openGroup("meta"));
       if (run.meta.contains("length_unit_m") && run.meta["length_unit_m"].is_number())
         run.length_unit_m = run.meta["length_unit_m"].get<double>();
-      if (!(run.length_unit_m > 0)) r.fail("/meta@length_unit_m must be positive");
+      // A sheet is between a micrometre and a few metres across in any unit system a run can
+      // use; outside that the value is damage, and the raster would not fit in memory.
+      if (!(run.length_unit_m >= 1e-9 && run.length_unit_m <= 1e3))
+        r.fail("/meta@length_unit_m = " + h5::format_number(run.length_unit_m) +
+               " is outside [1e-9, 1e3] metres per unit");
     } else {
       run.warnings.push_back("no /meta group; assuming length_unit_m = 1");
     }
@@ -93,24 +97,27 @@ RunData read_run(const std::string& path) {
     m.hinge_edge = r.read<std::int32_t>(mg, "/mesh", "hinge_edge", I, h, 0);
     m.boundary = r.read<std::uint8_t>(mg, "/mesh", "boundary", H5::PredType::NATIVE_UINT8, n, 0);
     if (n < 3 || t < 1) r.fail("/mesh has no triangles");
-    for (const auto& tri : m.triangles)
-      for (auto v : tri)
-        if (v < 0 || static_cast<hsize_t>(v) >= n) r.fail("/mesh/triangles index out of range");
-    for (auto he : m.hinge_edge)
-      if (he < 0 || static_cast<hsize_t>(he) >= e) r.fail("/mesh/hinge_edge index out of range");
-    for (const auto& ed : m.edges)
-      for (auto v : ed)
-        if (v < 0 || static_cast<hsize_t>(v) >= n) r.fail("/mesh/edges index out of range");
+    r.require_finite(h5::flat(m.ref_positions), "/mesh/ref_positions");
+    r.require_finite(m.rest_lengths, "/mesh/rest_lengths");
+    r.require_indices(m.triangles, n, "/mesh/triangles");
+    r.require_indices(m.edges, n, "/mesh/edges");
+    r.require_indices(m.hinges, n, "/mesh/hinges");
+    for (std::size_t i = 0; i < m.hinge_edge.size(); ++i)
+      if (m.hinge_edge[i] < 0 || static_cast<hsize_t>(m.hinge_edge[i]) >= e)
+        r.fail("/mesh/hinge_edge row " + std::to_string(i) + " holds edge " +
+               std::to_string(m.hinge_edge[i]) + ", outside [0, " + std::to_string(e) + ")");
 
     if (!file.nameExists("cycles")) r.fail("missing group /cycles (no completed cycles)");
     H5::Group cg = file.openGroup("cycles");
     for (hsize_t i = 0; i < cg.getNumObjs(); ++i) {
       const std::string name = cg.getObjnameByIdx(i);
       CycleData c;
-      if (cg.getObjTypeByIdx(i) != H5G_GROUP || !h5::parse_counter(name, c.cycle)) continue;
+      if (cg.getObjTypeByIdx(i) != H5G_GROUP || !h5::parse_counter(name, c.cycle, r, "/cycles"))
+        continue;
       H5::Group g = cg.openGroup(name);
       const std::string where = "/cycles/" + name;
       c.p = r.read<double>(g, where, "p", D, h, 0);
+      r.require_finite(c.p, where + "/p");
       r.rows(g, where, "x", 3) == n ? void() : r.fail(where + "/x must have " +
                                                       std::to_string(n) + " rows");
       run.cycles.push_back(std::move(c));

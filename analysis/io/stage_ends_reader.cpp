@@ -19,11 +19,12 @@ void read_stage_ends(const H5::H5File& file, const h5::Reader& r, hsize_t hinges
   for (hsize_t i = 0; i < sg.getNumObjs(); ++i) {
     const std::string name = sg.getObjnameByIdx(i);
     int counter = 0;
-    if (sg.getObjTypeByIdx(i) != H5G_GROUP || !h5::parse_counter(name, counter)) continue;
+    if (sg.getObjTypeByIdx(i) != H5G_GROUP || !h5::parse_counter(name, counter, r, "/stage_ends")) continue;
     const H5::Group g = sg.openGroup(name);
     const std::string where = "/stage_ends/" + name;
     StageEndData s;
     s.p = r.read<double>(g, where, "p", H5::PredType::NATIVE_DOUBLE, hinges, 0);
+    r.require_finite(s.p, where + "/p");
     s.t = r.number_attribute<double>(g, where, "t", H5::PredType::NATIVE_DOUBLE);
     s.cycle = r.number_attribute<int>(g, where, "cycle", H5::PredType::NATIVE_INT);
     s.stage_index = r.number_attribute<int>(g, where, "stage_index", H5::PredType::NATIVE_INT);

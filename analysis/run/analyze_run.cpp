@@ -122,11 +122,34 @@ void fit_law(const std::vector<double>& n, const std::vector<double>& y,
     increments = fit_log_law_increments(from, to, dy);
 }
 
+/// The largest crease map, in pixels across: 1e4 x 1e4 8-bit maps and their 32-bit facet labels
+/// take about 0.5 GB. A sheet that would need more is a wrong length unit or resolution, and
+/// OpenCV would fail on it deep inside (or the int extents overflow).
+constexpr double kMaxRasterSidePx = 1e4;
+
+/// Refuses a mesh whose raster cannot be made: no extent, or too many pixels across.
+void check_raster_size(const RunData& run, const AnalyzeOptions& opt) {
+  const double size = sheet_size(run.mesh), area = sheet_area(run.mesh);
+  if (!(size > 0) || !(area > 0))
+    throw InputError(run.path + ": /mesh/ref_positions: the sheet has no area (size " +
+                     std::to_string(size) + ", area " + std::to_string(area) + ")");
+  const double side_px = size * opt.px_per_cm * 100.0 * run.length_unit_m;
+  if (!(side_px <= kMaxRasterSidePx)) {
+    std::ostringstream m;
+    m << run.path << ": the crease map would be " << side_px << " pixels across (more than "
+      << kMaxRasterSidePx << "): the sheet is " << size * run.length_unit_m
+      << " m wide (/mesh/ref_positions times /meta@length_unit_m = " << run.length_unit_m
+      << ") at --px-per-cm " << opt.px_per_cm;
+    throw InputError(m.str());
+  }
+}
+
 }  // namespace
 
 RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt) {
   RunAnalysis out;
   const MeshData& mesh = run.mesh;
+  check_raster_size(run, opt);
   const double unit = run.length_unit_m;
   out.L0_m = sheet_size(mesh) * unit;
   out.area_m2 = sheet_area(mesh) * unit * unit;

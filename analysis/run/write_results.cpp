@@ -3,6 +3,7 @@
 
 #include "analysis/facets/area_distribution.hpp"
 #include "analysis/fits/facet_shape.hpp"
+#include "analysis/io/run_reader.hpp"
 #include "analysis/run/write_tables.hpp"
 
 #include <opencv2/imgcodecs.hpp>
@@ -13,6 +14,9 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <system_error>
+
+#include <unistd.h>
 
 namespace crumple::analysis {
 namespace {
@@ -151,11 +155,19 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
   return j;
 }
 
-void write_results(const std::string& dir_s, const RunData& run, const RunAnalysis& res,
-                   const AnalyzeOptions& opt) {
-  const std::filesystem::path dir(dir_s);
-  std::filesystem::create_directories(dir);
-  open_out(dir / "stats.json") << stats_json(run, res, opt).dump(2) << "\n";
+namespace {
+
+/// `dir` without a trailing separator ("out/" names the folder "out").
+std::filesystem::path folder_path(const std::string& dir) {
+  std::filesystem::path p = std::filesystem::path(dir).lexically_normal();
+  if (p.filename().empty() && p.has_parent_path()) p = p.parent_path();
+  return p;
+}
+
+void write_files(const std::filesystem::path& dir, const RunData& run, const RunAnalysis& res,
+                 const AnalyzeOptions& opt) {
+  auto stats = open_out(dir / "stats.json");
+  stats << stats_json(run, res, opt).dump(2) << "\n";
 
   auto cyc = open_out(dir / "cycles.csv");
   cyc << "cycle,crease_edges,crease_length_m,crease_length_L0,new_crease_length_m,perimeter_P,"
@@ -193,8 +205,55 @@ void write_results(const std::string& dir_s, const RunData& run, const RunAnalys
   write_stages_csv(stg, res);
   auto sen = open_out(dir / "sensitivity.csv");
   write_sensitivity_csv(sen, res.sensitivity);
-  if (!cyc || !fac || !dis || !stg || !sen)
-    throw std::runtime_error("error writing CSV files into " + dir.string());
+  // close() flushes; a full disk shows here, not in the buffered writes above.
+  for (std::ofstream* f : {&stats, &cyc, &fac, &dis, &stg, &sen}) f->close();
+  if (!stats || !cyc || !fac || !dis || !stg || !sen)
+    throw std::runtime_error("error writing the output files into " + dir.string());
+}
+
+}  // namespace
+
+void check_output_dir(const std::string& dir_s) {
+  namespace fs = std::filesystem;
+  const fs::path dir = folder_path(dir_s);
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw InputError(dir_s + ": the output folder exists and is not a folder");
+  fs::path p = dir.has_parent_path() ? dir.parent_path() : fs::path(".");
+  while (!fs::exists(p, ec) && p.has_parent_path() && p != p.parent_path()) p = p.parent_path();
+  if (!fs::is_directory(p, ec))
+    throw InputError(dir_s + ": cannot make the output folder: " + p.string() +
+                     " is not a folder");
+  if (::access(p.c_str(), W_OK | X_OK) != 0)
+    throw InputError(dir_s + ": cannot make the output folder: " + p.string() +
+                     " is not writable");
+}
+
+void write_results(const std::string& dir_s, const RunData& run, const RunAnalysis& res,
+                   const AnalyzeOptions& opt) {
+  namespace fs = std::filesystem;
+  const fs::path dir = folder_path(dir_s);
+  const fs::path parent = dir.has_parent_path() ? dir.parent_path() : fs::path(".");
+  fs::create_directories(parent);
+  const std::string tag = "." + dir.filename().string() + "." + std::to_string(::getpid());
+  const fs::path tmp = parent / (tag + ".tmp"), old = parent / (tag + ".old");
+  fs::remove_all(tmp);
+  try {
+    fs::create_directory(tmp);
+    write_files(tmp, run, res, opt);
+    if (fs::exists(dir)) {
+      fs::rename(dir, old);
+      fs::rename(tmp, dir);
+      fs::remove_all(old);
+    } else {
+      fs::rename(tmp, dir);
+    }
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(tmp, ec);
+    if (!fs::exists(dir, ec) && fs::exists(old, ec)) fs::rename(old, dir, ec);  // put it back
+    throw;
+  }
 }
 
 }  // namespace crumple::analysis

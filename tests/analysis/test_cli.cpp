@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sys/wait.h>
@@ -253,5 +254,23 @@ TEST(CrumpleAnalyze, BadInputExitsTwoAndWritesNothing) {
   check(dir / "shape.h5", "wrong shape");
   synth::write_run((dir / "good.h5").string(), m, {p});
   EXPECT_EQ(run_analyze((dir / "good.h5").string() + " --threshold -1"), 2) << "bad argument";
+  fs::remove_all(dir);
+}
+
+TEST(CrumpleAnalyze, RerunReplacesTheEarlierFolderWhole) {
+  const fs::path dir = scratch("rerun");
+  const MeshData m = synth::square_grid_mesh(4, 0.1);
+  synth::write_run((dir / "good.h5").string(), m, {std::vector<double>(m.hinges.size(), 0.3)});
+  const fs::path out = dir / "out";
+  fs::create_directories(out);
+  std::ofstream(out / "stale.csv") << "from an earlier analysis\n";
+  ASSERT_EQ(run_analyze((dir / "good.h5").string() + " -o " + out.string() + "/"), 0);
+  EXPECT_TRUE(fs::exists(out / "stats.json"));
+  EXPECT_FALSE(fs::exists(out / "stale.csv")) << "the folder is replaced, not merged into";
+  // The hidden sibling the files were written into is gone: only the run and the folder remain.
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"good.h5", "out"}));
   fs::remove_all(dir);
 }

@@ -61,7 +61,23 @@ def edit_set(f, path, value):
     d[...] = a
 
 
+def edit_fill(f, path, value):
+    """Sets every element of a dataset to value."""
+    d = f[path]
+    a = d[()]
+    if isinstance(value, str):  # "nan", "inf"
+        a = a.astype(float)
+        value = float(value)
+    a[...] = value
+    d[...] = a
+
+
 def edit_delete(f, path, _):
+    """Deletes a dataset or group, or an attribute 'GROUP@NAME'."""
+    if "@" in path:
+        group, name = path.split("@")
+        del f[group].attrs[name]
+        return
     del f[path]
 
 
@@ -74,7 +90,8 @@ def edit_string(f, path, value):
     f[path] = value
 
 
-EDITS = {"nan": edit_nan, "drop_row": edit_drop_row, "set": edit_set, "delete": edit_delete,
+EDITS = {"nan": edit_nan, "drop_row": edit_drop_row, "set": edit_set, "fill": edit_fill,
+         "delete": edit_delete,
          "move": edit_rename_group, "string": edit_string}
 
 
