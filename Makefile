@@ -13,7 +13,7 @@ DEB_PACKAGES := build-essential cmake git pkg-config libeigen3-dev libhdf5-dev h
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
   python3-matplotlib python3-numpy python3-h5py python3-scipy python3-yaml
 
-.PHONY: all deps build test test-all bench bench-axial physics-check reproduce calibrate clean
+.PHONY: all deps build test test-all test-sanitize bench bench-axial physics-check reproduce calibrate clean
 
 all: build
 
@@ -41,6 +41,21 @@ test: build
 
 test-all: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The fast suite built with AddressSanitizer and UndefinedBehaviorSanitizer in its own build
+# folder (-O1 with debug lines: the reports name source lines). Any report fails the test that
+# made it; the child processes the tests start (crumple-sim, crumple-analyze) are instrumented too.
+# Tests labelled sanitize_skip (too slow instrumented, their code covered by others) are left out.
+SANITIZE_BUILD ?= build-sanitize
+SANITIZE_ENV := ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1 \
+  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitize/lsan.supp:print_suppressions=0
+test-sanitize: deps
+	@test -f $(SANITIZE_BUILD)/CMakeCache.txt || cmake -S . -B $(SANITIZE_BUILD) \
+	  -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DCRUMPLE_SANITIZE=ON \
+	  -DCRUMPLE_BUILD_BENCH=OFF $(CMAKE_ARGS)
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	cd $(SANITIZE_BUILD) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -LE 'slow|sanitize_skip'
 
 # bench_radial at physical mass: the explicit-only variant is timed over ten spans of 0.01 s
 # spread over the interval (each from the block-Jacobi hybrid's state there) and scaled (its
@@ -95,4 +110,4 @@ include pipeline/calibration/calibrate.mk
 include pipeline/checks/rate_check.mk
 
 clean:
-	rm -rf $(BUILD) runs results
+	rm -rf $(BUILD) $(SANITIZE_BUILD) runs results

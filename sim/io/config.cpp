@@ -156,7 +156,7 @@ void check_keys(const YAML::Node& n, const std::string& file, const std::string&
   if (n.IsMap()) {
     std::map<std::string, YAML::Mark> seen;
     for (auto it = n.begin(); it != n.end(); ++it) {
-      const YAML::Node& k = it->first;
+      const YAML::Node k = it->first;  // a copy: `it->` is a proxy that dies here
       if (!k.IsScalar())
         throw InputError(mark_of(file, k.Mark()) + ": " + (path.empty() ? "" : path + ": ") +
                          "a key must be a plain word, got " + scalar_text(k));
