@@ -32,7 +32,7 @@ std::vector<std::string> StageRegistry::names() const {
 }
 
 std::unique_ptr<Stage> StageRegistry::make(const YAML::Node& node, const std::string& file,
-                                           const std::string& path) const {
+                                           const std::string& path, const StageSets* sets) const {
   auto mark = [&](const YAML::Node& n) {
     return file + ":" + std::to_string(n.Mark().line + 1) + ":" +
            std::to_string(n.Mark().column + 1);
@@ -49,18 +49,19 @@ std::unique_ptr<Stage> StageRegistry::make(const YAML::Node& node, const std::st
     throw InputError(mark(t) + ": " + path + ".type: unknown stage type '" + name +
                      "' (valid: " + valid + ")");
   }
-  StageArgs args(node, file, path, st->params);
+  StageArgs args(node, file, path, st->params, sets);
   if (st->check) st->check(args);
   return st->make(args);
 }
 
-void StageRegistry::validate_protocol(const YAML::Node& stages, const std::string& file) const {
+void StageRegistry::validate_protocol(const YAML::Node& stages, const std::string& file,
+                                      const StageSets* sets) const {
   if (!stages.IsSequence() || stages.size() == 0)
     throw InputError(file + ": protocol.stages: the protocol has no stages");
   std::vector<std::string> provided;
   for (std::size_t k = 0; k < stages.size(); ++k) {
     const std::string path = "protocol.stages[" + std::to_string(k) + "]";
-    make(stages[k], file, path);
+    make(stages[k], file, path, sets);
     const StageType& st = *find(stages[k]["type"].Scalar());
     for (const auto& need : st.needs) {
       bool ok = false;

@@ -35,10 +35,11 @@ class StageRegistry {
   std::vector<std::string> names() const;  ///< sorted
   /// Builds a stage from its YAML map; InputError with file:line on any problem.
   std::unique_ptr<Stage> make(const YAML::Node& node, const std::string& file,
-                              const std::string& path) const;
+                              const std::string& path, const StageSets* sets = nullptr) const;
   /// Builds every stage of a cycle (`stages`, a YAML list) once and checks that each one's
   /// `needs` are provided by a stage before it; InputError with file:line of the stage.
-  void validate_protocol(const YAML::Node& stages, const std::string& file) const;
+  void validate_protocol(const YAML::Node& stages, const std::string& file,
+                         const StageSets* sets = nullptr) const;
   /// Every type with its parameters, for `crumple-sim --list-stages`.
   std::string describe() const;
 

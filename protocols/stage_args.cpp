@@ -29,8 +29,8 @@ bool parse_number(const YAML::Node& n, double& out) {
 }  // namespace
 
 StageArgs::StageArgs(const YAML::Node& node, std::string file, std::string path,
-                     const std::vector<ParamSpec>& specs)
-    : node_(node), file_(std::move(file)), path_(std::move(path)), specs_(&specs) {
+                     const std::vector<ParamSpec>& specs, const StageSets* sets)
+    : node_(node), file_(std::move(file)), path_(std::move(path)), specs_(&specs), sets_(sets) {
   if (!node_.IsMap())
     throw InputError(mark_text(file_, node_.Mark()) + ": " + path_ + ": a stage must be a map");
   std::vector<std::string> valid;
@@ -40,9 +40,12 @@ StageArgs::StageArgs(const YAML::Node& node, std::string file, std::string path,
     if (key == "type") continue;
     bool known = false;
     for (const auto& s : specs) known = known || s.name == key;
-    if (!known)
-      throw InputError(mark_text(file_, it->first.Mark()) + ": " + path_ + "." + key +
-                       ": unknown parameter (valid: " + join(valid) + ")");
+    if (!known) {
+      const std::string dotted = path_ + "." + key;
+      const bool by_set = sets_ && sets_->count(dotted);
+      throw InputError((by_set ? sets_->at(dotted) : mark_text(file_, it->first.Mark())) + ": " +
+                       dotted + ": unknown parameter (valid: " + join(valid) + ")");
+    }
   }
   // Validate every declared parameter now, so a bad value fails before anything runs.
   for (const auto& s : specs) {
@@ -66,8 +69,11 @@ const ParamSpec& StageArgs::spec(const std::string& key) const {
 bool StageArgs::given(const std::string& key) const { return node_[key].IsDefined(); }
 
 std::string StageArgs::where(const std::string& key) const {
+  const std::string dotted = path_ + "." + key;
+  if (sets_)
+    if (const auto it = sets_->find(dotted); it != sets_->end()) return it->second + ": " + dotted;
   const YAML::Node n = node_[key];
-  return mark_text(file_, n.IsDefined() ? n.Mark() : node_.Mark()) + ": " + path_ + "." + key;
+  return mark_text(file_, n.IsDefined() ? n.Mark() : node_.Mark()) + ": " + dotted;
 }
 
 void StageArgs::fail(const std::string& key, const std::string& what) const {

@@ -11,6 +11,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -28,12 +29,17 @@ struct ParamSpec {
   std::vector<std::string> choices;  ///< text: allowed values (empty: any)
 };
 
+/// Stage parameters given on the command line: "protocol.stages[k].KEY" -> "--set ..." as
+/// given (ProtocolParams::stage_sets); messages about them name the argument, not a file line.
+using StageSets = std::map<std::string, std::string>;
+
 class StageArgs {
  public:
   /// node: the stage's map (with its `type` key); file: the config's path for messages;
-  /// path: the dotted key of the stage, e.g. "protocol.stages[2]".
+  /// path: the dotted key of the stage, e.g. "protocol.stages[2]"; sets: which of its keys a
+  /// --set argument gave (may be null).
   StageArgs(const YAML::Node& node, std::string file, std::string path,
-            const std::vector<ParamSpec>& specs);
+            const std::vector<ParamSpec>& specs, const StageSets* sets = nullptr);
 
   double number(const std::string& key) const;
   std::string text(const std::string& key) const;
@@ -53,6 +59,7 @@ class StageArgs {
   YAML::Node node_;
   std::string file_, path_;
   const std::vector<ParamSpec>* specs_;
+  const StageSets* sets_;
 };
 
 }  // namespace crumple

@@ -43,7 +43,7 @@ struct Options {
   std::optional<std::int64_t> seed;
   int threads = 0;
   std::vector<std::string> sets;
-  bool resume = false, force = false, quiet = false, list = false;
+  bool resume = false, force = false, quiet = false, list = false, print_config = false;
 };
 
 /// A protocol that stores more frames than this is a typo of output.dt (every frame is kept in
@@ -54,7 +54,7 @@ constexpr double kMaxFrames = 1e6;
 /// the frames the run can store at most (when every stage is bounded by its max_duration).
 void validate_protocol(const Params& p, const StageRegistry& registry) {
   const YAML::Node& stages = p.protocol.stages;
-  registry.validate_protocol(stages, p.protocol.stages_source);
+  registry.validate_protocol(stages, p.protocol.stages_source, &p.protocol.stage_sets);
   double cycle_max = 0;
   for (std::size_t k = 0; k < stages.size(); ++k)
     cycle_max += registry.make(stages[k], p.protocol.stages_source, "")->max_duration;
@@ -104,7 +104,18 @@ Params load_run(const Options& o, const std::string& tmp, RunRecord& rec) {
   return given;
 }
 
+/// --print-config: the configuration checked as a run would check it (keys, stages, relations),
+/// printed resolved with every default; nothing is written.
+int print_config(const Options& o) {
+  RunRecord rec;
+  const Params p = load_run(o, "", rec);
+  validate_protocol(p, StageRegistry::builtin());
+  std::printf("%s", resolved_yaml(p).c_str());
+  return kExitOk;
+}
+
 int run(const Options& o) {
+  if (o.print_config) return print_config(o);
   const std::string tmp = o.output + ".tmp";
   RunRecord rec;
   const Params p = load_run(o, tmp, rec);
@@ -199,7 +210,8 @@ int run(const Options& o) {
   ProtocolRunner runner(
       model, stepper,
       [&](int k) {
-        return registry.make(stages[k], file, "protocol.stages[" + std::to_string(k) + "]");
+        return registry.make(stages[k], file, "protocol.stages[" + std::to_string(k) + "]",
+                             &p.protocol.stage_sets);
       },
       static_cast<int>(stages.size()), info, rs);
 
@@ -278,6 +290,9 @@ int main(int argc, char** argv) {
                "replace an existing RUN.h5 (and its .xdmf) and discard a pending RUN.h5.tmp");
   app.add_flag("--quiet", o.quiet, "no progress output");
   app.add_flag("--list-stages", o.list, "print every stage type with its parameters");
+  app.add_flag("--print-config", o.print_config,
+               "check CONFIG (with --set and --seed) as a run would and print it resolved, every "
+               "default filled in; runs nothing, writes nothing, needs no -o");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -288,7 +303,7 @@ int main(int argc, char** argv) {
     std::printf("%s", StageRegistry::builtin().describe().c_str());
     return kExitOk;
   }
-  if (o.config.empty() || o.output.empty()) {
+  if (o.config.empty() || (o.output.empty() && !o.print_config)) {
     std::fprintf(stderr, "crumple-sim: usage: crumple-sim CONFIG.yaml -o RUN.h5 [options]\n");
     return kExitBadInput;
   }
@@ -311,7 +326,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "crumple-sim: %s\n", e.what());
     // Nothing half written: a checkpoint this process began is removed; one that was there
     // before (another run's, or this run's before a resume) is never touched.
-    if (!tmp_before) fs::remove(tmp, ec);
+    if (!tmp_before && !o.output.empty()) fs::remove(tmp, ec);
     return kExitBadInput;
   } catch (const NumericalFailure& e) {
     std::fprintf(stderr, "crumple-sim: numerical failure: %s\n%s", e.what(), kept().c_str());

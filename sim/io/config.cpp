@@ -21,6 +21,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 struct Context {
   std::string file;
   std::map<std::string, std::string> overrides;  // dotted key -> "key=value" as given
+  std::map<std::string, std::string> stage_sets;  // "protocol.stages[k].key" -> "--set ..."
   std::map<std::string, std::string>* origins = nullptr;  // Params::origins being filled
 
   /// The --set argument that gave `dotted`, a key below it or a section above it; empty: none.
@@ -173,6 +174,50 @@ void check_keys(const YAML::Node& n, const std::string& file, const std::string&
   }
 }
 
+/// `--set protocol.stages.SEL.KEY=VALUE`: one parameter of one stage of the list (the file's or
+/// an earlier --set's), SEL a stage type that appears once or a 0-based index. The stage
+/// registry validates the value later and names this argument (ProtocolParams::stage_sets).
+void apply_stage_override(YAML::Node& root, const std::vector<std::string>& parts,
+                          const YAML::Node& value, const std::string& spec, Context& ctx) {
+  const auto fail = [&](const std::string& what) { throw InputError("--set " + spec + ": " + what); };
+  if (parts.size() != 4)
+    fail("a stage parameter is protocol.stages.TYPE.KEY=VALUE or protocol.stages.INDEX.KEY=VALUE");
+  YAML::Node stages = root["protocol"]["stages"];
+  if (!stages.IsDefined() || !stages.IsSequence() || stages.size() == 0)
+    fail("the protocol has no stage list to set a parameter in");
+  const std::string& sel = parts[2];
+  const std::string& key = parts[3];
+  std::vector<std::size_t> found;
+  std::string types;
+  for (std::size_t k = 0; k < stages.size(); ++k) {
+    const YAML::Node t = stages[k].IsMap() ? stages[k]["type"] : YAML::Node();
+    const std::string name = t.IsDefined() && t.IsScalar() ? t.Scalar() : "?";
+    types += (types.empty() ? "" : ", ") + std::to_string(k) + ": " + name;
+    if (name == sel) found.push_back(k);
+  }
+  std::size_t k = 0;
+  if (!sel.empty() && sel.find_first_not_of("0123456789") == std::string::npos) {
+    k = sel.size() <= 6 ? std::stoul(sel) : stages.size();
+    if (k >= stages.size())
+      fail("stage index " + sel + " out of range (the stages are " + types + ")");
+  } else if (found.size() == 1) {
+    k = found[0];
+  } else if (found.empty()) {
+    fail("no stage of type '" + sel + "' in the protocol (the stages are " + types + ")");
+  } else {
+    std::string at;
+    for (auto i : found) at += (at.empty() ? "" : ", ") + std::to_string(i);
+    fail("the protocol has " + std::to_string(found.size()) + " " + sel + " stages (" + at +
+         "): name one by its index, e.g. protocol.stages." + std::to_string(found[0]) + "." +
+         key + "=...");
+  }
+  if (key == "type") fail("a stage's type cannot be set alone; give the whole protocol.stages list");
+  if (!stages[k].IsMap()) fail("stage " + std::to_string(k) + " is not a map");
+  YAML::Node stage = stages[k];
+  stage[key] = value;
+  ctx.stage_sets["protocol.stages[" + std::to_string(k) + "]." + key] = "--set " + spec;
+}
+
 void apply_override(YAML::Node& root, const std::string& spec, Context& ctx) {
   const auto eq = spec.find('=');
   if (eq == std::string::npos || eq == 0)
@@ -192,6 +237,8 @@ void apply_override(YAML::Node& root, const std::string& spec, Context& ctx) {
     throw InputError("--set " + spec + ": cannot parse the value: " + e.msg);
   }
   check_keys(parsed, "--set " + spec, key);
+  if (parts.size() > 2 && parts[0] == "protocol" && parts[1] == "stages")
+    return apply_stage_override(root, parts, parsed, spec, ctx);
   // Walk down with fresh handles (yaml-cpp nodes are references; assignment would alias).
   std::vector<YAML::Node> path{root};
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
@@ -202,6 +249,7 @@ void apply_override(YAML::Node& root, const std::string& spec, Context& ctx) {
   }
   path.back()[parts.back()] = parsed;
   ctx.overrides[key] = spec;
+  if (key == "protocol.stages") ctx.stage_sets.clear();  // a new list: earlier stage sets are gone
 }
 
 Params parse(YAML::Node root, Context& ctx) {
@@ -371,6 +419,7 @@ Params load_from(const std::string& text, const std::string& name,
     p.protocol.stages_source = "--set " + spec;
   else
     p.protocol.stages_source = name;
+  p.protocol.stage_sets = std::move(ctx.stage_sets);
   return p;
 }
 

@@ -48,6 +48,9 @@ struct ProtocolParams {
   double t_max = 1e30;           ///< cap on the simulated time of the run (s)
   YAML::Node stages;             ///< the stage list, validated by the stage registry
   std::string stages_source;     ///< where the list came from: the file, or "--set protocol.stages=..."
+  /// Stage parameters given by `--set protocol.stages.TYPE.KEY=V`: "protocol.stages[k].KEY" ->
+  /// "--set ..." as given, so the stage registry names the argument in its messages.
+  std::map<std::string, std::string> stage_sets;
 };
 
 struct OutputParams {

@@ -192,3 +192,46 @@ TEST(Config, SetErrorsNameTheArgument) {
   EXPECT_EQ(p.where("mesh.nodes"), "c.yaml:1:15: mesh.nodes");
   EXPECT_EQ(p.where("output.dt"), "c.yaml: output.dt (default)");
 }
+
+// One stage parameter set from the command line, by stage type or by index; the place is the
+// --set argument (ProtocolParams::stage_sets), the rest of the list keeps the file's places.
+TEST(Config, StageParametersBySet) {
+  const std::string two =
+      "protocol:\n  stages:\n    - {type: roll, duration: 0.2}\n"
+      "    - {type: compress, compaction: 0.27}\n    - {type: release}\n";
+  const Params p = load_config_text(two, "c.yaml", {"protocol.stages.compress.compaction=0.18",
+                                                    "protocol.stages.0.duration=0.3"});
+  EXPECT_DOUBLE_EQ(p.protocol.stages[1]["compaction"].as<double>(), 0.18);
+  EXPECT_DOUBLE_EQ(p.protocol.stages[0]["duration"].as<double>(), 0.3);
+  EXPECT_EQ(p.protocol.stages_source, "c.yaml");
+  EXPECT_EQ(p.protocol.stage_sets.at("protocol.stages[1].compaction"),
+            "--set protocol.stages.compress.compaction=0.18");
+  EXPECT_EQ(p.protocol.stage_sets.at("protocol.stages[0].duration"),
+            "--set protocol.stages.0.duration=0.3");
+  // A new key of a stage is added (the registry validates it later).
+  const Params q = load_config_text(two, "c.yaml", {"protocol.stages.release.min_duration=0.1"});
+  EXPECT_DOUBLE_EQ(q.protocol.stages[2]["min_duration"].as<double>(), 0.1);
+
+  const std::string twice = two + "    - {type: compress, compaction: 0.1}\n";
+  EXPECT_EQ(error_of(twice, {"protocol.stages.compress.compaction=0.2"}),
+            "--set protocol.stages.compress.compaction=0.2: the protocol has 2 compress stages "
+            "(1, 3): name one by its index, e.g. protocol.stages.1.compaction=...");
+  const Params r = load_config_text(twice, "c.yaml", {"protocol.stages.3.compaction=0.2"});
+  EXPECT_DOUBLE_EQ(r.protocol.stages[3]["compaction"].as<double>(), 0.2);
+  EXPECT_DOUBLE_EQ(r.protocol.stages[1]["compaction"].as<double>(), 0.27);
+  EXPECT_EQ(error_of(two, {"protocol.stages.fold.angle=1"}),
+            "--set protocol.stages.fold.angle=1: no stage of type 'fold' in the protocol (the "
+            "stages are 0: roll, 1: compress, 2: release)");
+  EXPECT_TRUE(starts(error_of(two, {"protocol.stages.9.speed=1"}),
+                     "--set protocol.stages.9.speed=1: stage index 9 out of range"));
+  EXPECT_TRUE(starts(error_of(two, {"protocol.stages.compress=1"}),
+                     "--set protocol.stages.compress=1: a stage parameter is"));
+  EXPECT_TRUE(starts(error_of(two, {"protocol.stages.compress.type=roll"}),
+                     "--set protocol.stages.compress.type=roll: a stage's type cannot be set"));
+  EXPECT_TRUE(starts(error_of("", {"protocol.stages.compress.speed=1"}),
+                     "--set protocol.stages.compress.speed=1: the protocol has no stage list"));
+  // A whole new list drops the stage sets made before it.
+  const Params s = load_config_text(two, "c.yaml", {"protocol.stages.compress.compaction=0.18",
+                                                    "protocol.stages=[{type: roll}]"});
+  EXPECT_TRUE(s.protocol.stage_sets.empty());
+}
