@@ -13,7 +13,7 @@ DEB_PACKAGES := build-essential cmake git pkg-config libeigen3-dev libhdf5-dev h
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
   python3-matplotlib python3-numpy python3-h5py python3-scipy python3-yaml
 
-.PHONY: all deps build test test-all test-sanitize bench bench-axial physics-check reproduce calibrate clean
+.PHONY: all deps build test test-all test-sanitize bench bench-axial physics-check reproduce calibrate docs clean
 
 all: build
 
@@ -108,6 +108,10 @@ physics-check: build
 include pipeline/reproduce.mk
 include pipeline/calibration/calibrate.mk
 include pipeline/checks/rate_check.mk
+
+# docs/CONFIG.md's key tables from the schema (the test config_doc_current checks them).
+docs: build
+	$(PYTHON) pipeline/docs/update_config_doc.py --sim $(SIM) --doc docs/CONFIG.md
 
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD) runs results

@@ -1,6 +1,9 @@
 // The stage registry (registry.hpp).
 #include "protocols/registry.hpp"
 
+#include "sim/core/schema.hpp"
+
+#include <cmath>
 #include <sstream>
 
 namespace crumple {
@@ -80,13 +83,69 @@ void StageRegistry::validate_protocol(const YAML::Node& stages, const std::strin
   }
 }
 
+namespace {
+
+/// A stage parameter's range in the notation of the config keys (sim/core/schema.hpp); 1e30
+/// stands for "no bound" in the stage tables.
+std::string range_text(const ParamSpec& p) {
+  if (p.kind == ParamSpec::Kind::Flag) return "";
+  if (p.kind == ParamSpec::Kind::Text) {
+    std::string s;
+    for (const auto& c : p.choices) s += (s.empty() ? "" : ", ") + c;
+    return s;
+  }
+  schema::Key k;
+  k.kind = schema::Kind::Real;
+  if (std::isfinite(p.min) && std::abs(p.min) < 1e30) k.lo = p.min;
+  if (std::isfinite(p.max) && std::abs(p.max) < 1e30) k.hi = p.max;
+  k.lo_open = p.min_open;
+  return k.range_doc();
+}
+
+std::string default_text(const ParamSpec& p) {
+  if (p.fallback.empty()) return "required";
+  if (p.kind != ParamSpec::Kind::Number) return p.fallback;
+  const double v = std::stod(p.fallback);
+  return v >= 1e30 ? "none (1e30)" : schema::format_number(v);
+}
+
+}  // namespace
+
+std::string StageRegistry::describe_markdown() const {
+  std::ostringstream os;
+  os << "<!-- keys: stages -->\n";
+  for (const auto& [name, t] : types_) {
+    os << "\n#### `" << name << "`\n" << t.help << ".";
+    if (!t.needs.empty()) {
+      os << " Needs, earlier in the cycle:";
+      for (const auto& n : t.needs) os << " " << n;
+      os << ".";
+    }
+    if (!t.provides.empty()) {
+      os << " Provides:";
+      for (const auto& n : t.provides) os << " " << n;
+      os << ".";
+    }
+    os << "\n\n| parameter | type | default | range | meaning |\n|---|---|---|---|---|\n";
+    for (const auto& p : t.params) {
+      const char* type = p.kind == ParamSpec::Kind::Number ? "number"
+                         : p.kind == ParamSpec::Kind::Flag ? "bool"
+                                                           : "word";
+      os << "| `" << p.name << "` | " << type << " | " << default_text(p) << " | " << range_text(p)
+         << " | " << p.help << " |\n";
+    }
+  }
+  os << "<!-- /keys -->\n";
+  return os.str();
+}
+
 std::string StageRegistry::describe() const {
   std::ostringstream os;
   for (const auto& [name, t] : types_) {
     os << name << ": " << t.help << "\n";
     for (const auto& p : t.params) {
       os << "    " << p.name;
-      os << (p.fallback.empty() ? " (required)" : " = " + p.fallback);
+      os << (p.fallback.empty() ? " (required)" : " = " + default_text(p));
       if (!p.choices.empty()) {
         os << " {";
         for (std::size_t i = 0; i < p.choices.size(); ++i) os << (i ? "|" : "") << p.choices[i];

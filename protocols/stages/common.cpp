@@ -1,6 +1,8 @@
 // Shared helpers of the built-in stage types (common.hpp).
 #include "protocols/stages/common.hpp"
 
+#include "sim/core/schema.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,11 +11,11 @@ namespace crumple::stages {
 std::vector<ParamSpec> common_params(double max_duration, double check_interval) {
   using K = ParamSpec::Kind;
   return {
-      {"max_duration", K::Number, std::to_string(max_duration),
+      {"max_duration", K::Number, schema::format_number(max_duration),
        "cap on the stage's simulated duration (s); the run warns if the target is not reached",
        0.0, 1e30, true},
       // Bounded below: every check ends a chunk of steps, and a vanishing interval is a hang.
-      {"check_interval", K::Number, std::to_string(check_interval),
+      {"check_interval", K::Number, schema::format_number(check_interval),
        "simulated time between checks of the stop condition (s)", 1e-6, 1e30},
   };
 }

@@ -14,6 +14,7 @@
 #include "sim/core/stop_signal.hpp"
 #include "sim/contact/self_contact.hpp"
 #include "sim/io/config.hpp"
+#include "sim/io/config_doc.hpp"
 #include "sim/io/units.hpp"
 #include "sim/mesh/generate.hpp"
 #include "sim/mesh/quality.hpp"
@@ -44,6 +45,7 @@ struct Options {
   int threads = 0;
   std::vector<std::string> sets;
   bool resume = false, force = false, quiet = false, list = false, print_config = false;
+  bool list_keys = false, markdown = false;
 };
 
 /// A protocol that stores more frames than this is a typo of output.dt (every frame is kept in
@@ -126,14 +128,8 @@ int run(const Options& o) {
 
   if (o.threads > 0) omp_set_num_threads(o.threads);
   if (!rec.checkpoint) {
-    MeshSpec spec;
-    spec.shape = p.mesh.shape;
-    spec.size = p.mesh.size;
-    spec.nodes = p.mesh.nodes;
-    spec.seed = p.mesh.seed;
-    spec.lloyd_iterations = p.mesh.lloyd_iterations;
     rec = RunRecord{};
-    rec.mesh = generate_mesh(spec);
+    rec.mesh = generate_mesh(p.mesh);
     rec.config = resolved_yaml(p);
     rec.meta.start_time = utc_now();
   }
@@ -228,7 +224,7 @@ int run(const Options& o) {
         },
         [&] { return contact_on; });
   // The sink also records the contact term's costs (/log@contact_*) for benchmarks.
-  FileSink sink(rec, tmp, integ, p.output.crease_threshold,
+  FileSink sink(rec, tmp, integ,
                 contact ? contact->pairs.get() : nullptr);
   State s = model.rest_state();
   const std::optional<Checkpoint> resume_from = rec.checkpoint;
@@ -290,6 +286,11 @@ int main(int argc, char** argv) {
                "replace an existing RUN.h5 (and its .xdmf) and discard a pending RUN.h5.tmp");
   app.add_flag("--quiet", o.quiet, "no progress output");
   app.add_flag("--list-stages", o.list, "print every stage type with its parameters");
+  app.add_flag("--list-keys", o.list_keys,
+               "print every configuration key (type, default, range, unit, meaning) and every "
+               "stage type with its parameters");
+  app.add_flag("--markdown", o.markdown,
+               "with --list-keys: as the markdown tables of docs/CONFIG.md");
   app.add_flag("--print-config", o.print_config,
                "check CONFIG (with --set and --seed) as a run would and print it resolved, every "
                "default filled in; runs nothing, writes nothing, needs no -o");
@@ -298,6 +299,15 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);
     return rc == 0 ? kExitOk : kExitBadInput;
+  }
+  if (o.list_keys) {
+    const auto& stages = StageRegistry::builtin();
+    if (o.markdown)
+      std::printf("%s%s", config_keys_markdown().c_str(), stages.describe_markdown().c_str());
+    else
+      std::printf("%s\nstage types (protocol.stages[k].type) and their parameters:\n%s",
+                  config_keys_text().c_str(), stages.describe().c_str());
+    return kExitOk;
   }
   if (o.list) {
     std::printf("%s", StageRegistry::builtin().describe().c_str());

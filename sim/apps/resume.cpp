@@ -3,19 +3,13 @@
 
 #include "protocols/integrator_stepper.hpp"
 #include "sim/io/config.hpp"
+#include "sim/io/config_schema.hpp"
 
 #include <algorithm>
 #include <map>
 
 namespace crumple {
 
-const std::vector<std::string> kResumableKeys = {
-    "integrator.rtol",       "integrator.atol",           "integrator.h_init",
-    "integrator.h_min",      "integrator.h_max",          "integrator.max_growth",
-    "integrator.newton_tol", "integrator.newton_max_iters", "integrator.newton_target",
-    "integrator.cg_tol",     "integrator.cg_tol_max",     "integrator.cg_max_iters",
-    "integrator.explicit_rtol", "output.dt",              "output.checkpoint_wall_s",
-};
 
 namespace {
 
@@ -64,7 +58,8 @@ std::vector<std::string> resume_changes(const Params& stored, const Params& give
     const std::string new_value = it == b.end() ? "(absent)" : it->second;
     if (new_value == old_value) continue;
     const std::string line = key + ": " + old_value + " -> " + new_value;
-    if (std::find(kResumableKeys.begin(), kResumableKeys.end(), key) != kResumableKeys.end())
+    const schema::Key* spec = find_key(key);
+    if (spec && spec->resumable)
       changes.push_back(line);
     else
       refused.push_back(given.where(key) + ": " + old_value + " in the run, " + new_value +

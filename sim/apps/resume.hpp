@@ -1,7 +1,8 @@
 // What `crumple-sim --resume` accepts (README.md, "Checkpoints and resume"): the checkpoint must
 // fit the run's mesh and protocol, and the configuration given on the command line must be the
 // run's own except for the keys that steer the numerics or the output without changing the
-// problem (kResumableKeys). Those are applied from the checkpoint on and recorded in /resumes.
+// problem (the keys the schema marks may_change_on_resume: resumable_keys(), config_schema.hpp).
+// Those are applied from the checkpoint on and recorded in /resumes.
 #pragma once
 
 #include "sim/io/params.hpp"
@@ -11,10 +12,6 @@
 #include <vector>
 
 namespace crumple {
-
-/// Dotted keys that may differ on resume: tolerances, step limits and iteration caps of the
-/// integrator, and the output and checkpoint intervals. (Threads are a command-line option.)
-extern const std::vector<std::string> kResumableKeys;
 
 /// The keys whose values differ between `stored` (the run's configuration) and `given` (the
 /// command line's), as "key: OLD -> NEW", if all of them are resumable; otherwise an InputError

@@ -16,12 +16,11 @@ class FileSink : public RunSink {
  public:
   /// `contact`: the pairwise contact term whose stats() go into RunCosts (null: no contact). The
   /// costs a resumed record brought along are the base that this process's costs add to.
-  FileSink(RunRecord& record, std::string tmp_path, Integrator& integ, double crease_threshold,
+  FileSink(RunRecord& record, std::string tmp_path, Integrator& integ,
            const ContactTerm* contact = nullptr)
       : rec_(record),
         path_(std::move(tmp_path)),
         integ_(integ),
-        threshold_(crease_threshold),
         contact_(contact),
         base_(record.costs.value_or(RunCosts{})),
         last_stage_end_(Clock::now()) {}
@@ -46,9 +45,6 @@ class FileSink : public RunSink {
     c.t = s.t;
     c.x = s.x;
     c.p = s.p;
-    c.crease_threshold = threshold_;
-    c.crease_mask.resize(s.p.size());
-    for (Index h = 0; h < s.p.size(); ++h) c.crease_mask[h] = std::abs(s.p[h]) > threshold_;
     rec_.cycles.push_back(std::move(c));
   }
   /// A checkpoint's write is counted in the next write's output_s (a file cannot hold the time
@@ -94,7 +90,6 @@ class FileSink : public RunSink {
   RunRecord& rec_;
   std::string path_;
   Integrator& integ_;
-  double threshold_;
   const ContactTerm* contact_;
   RunCosts base_;
   double output_s_ = 0;            // this process's writing so far

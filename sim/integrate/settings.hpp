@@ -1,7 +1,7 @@
 // Every knob of the hybrid integrator (paper §3.2-3.4) in one struct with its default.
 //
-// The YAML side is crumple::IntegratorParams (sim/io/params.hpp, keys of the same names); the
-// application maps it into this struct. Tolerances weight each component i by
+// The config's integrator section is this struct itself; its keys, ranges and meanings are
+// declared once in settings_schema.cpp. Tolerances weight each component i by
 // atol + rtol |y_i| (positions in length units, p dimensionless; the explicit mode also
 // weights velocities this way, with explicit_rtol).
 #pragma once
@@ -62,7 +62,7 @@ IntegrationMode parse_integration_mode(const std::string& name);
 /// "two_level", "block_jacobi", "cg", "incomplete_cholesky", "ldlt"; throws InputError otherwise.
 LinearSolverKind parse_linear_solver(const std::string& name);
 std::string to_string(LinearSolverKind kind);
-/// Throws InputError if a value is out of range (orders, tolerances, sizes).
+/// Throws InputError naming the key when a value is out of the range of integrator_schema().
 void validate(const IntegratorSettings& s);
 
 }  // namespace crumple

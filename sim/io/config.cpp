@@ -1,8 +1,10 @@
 // Configuration loading with file:line:column errors, --set overrides and the resolved YAML
-// (config.hpp). The schema is the code below: one reader call per key, with its range.
+// (config.hpp). What the keys are is not written here: the reader and the emitter walk the
+// schema (config_schema.cpp), so a key added there is read, checked, printed and documented.
 #include "sim/io/config.hpp"
 
 #include "sim/core/errors.hpp"
+#include "sim/io/config_schema.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -15,8 +17,6 @@
 namespace crumple {
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Context {
   std::string file;
@@ -56,83 +56,127 @@ std::string scalar_text(const YAML::Node& n) {
   return "nothing";
 }
 
-class Section {
+/// Reads one section of the config into its struct, key by key as the schema declares it;
+/// records where each given key was set (Params::origins).
+class SectionReader {
  public:
-  Section(const YAML::Node& root, const std::string& name, const Context& ctx,
-          std::vector<std::string> keys)
-      : name_(name), ctx_(ctx), node_(root[name]) {  // copy: assigning a missing key throws
+  SectionReader(const YAML::Node& root, const schema::Section& section, void* values,
+                const Context& ctx)
+      : section_(section), values_(values), ctx_(ctx), node_(root[section.name]) {
+    // (a copy of the handle: assigning a missing key through a reference would throw)
     if (!node_.IsDefined() || node_.IsNull()) return;
-    if (!node_.IsMap()) ctx_.fail(node_, name, "expected a map of keys, got " + scalar_text(node_));
+    if (!node_.IsMap())
+      ctx_.fail(node_, section_.name, "expected a map of keys, got " + scalar_text(node_));
     for (auto it = node_.begin(); it != node_.end(); ++it) {
       const std::string key = it->first.Scalar();
-      bool known = false;
-      for (const auto& k : keys) known = known || k == key;
-      if (!known)
-        ctx_.fail(it->first, name + "." + key, "unknown key (valid: " + join(keys) + ")");
+      if (!section_.find(key))
+        ctx_.fail(it->first, dotted(key), "unknown key (valid: " + join(section_.names()) + ")");
     }
   }
 
-  void number(const char* key, double& out, double lo, double hi, bool lo_open = false,
-              bool hi_open = false) {
-    const YAML::Node n = get(key);
-    if (!n) return;
-    double v;
-    if (!parse(n, v)) ctx_.fail(n, dotted(key), "expected a number, got " + scalar_text(n));
-    const bool low = lo_open ? !(v > lo) : !(v >= lo);
-    const bool high = hi_open ? !(v < hi) : !(v <= hi);
-    if (low || high) {
-      std::ostringstream os;
-      os << "must be " << (lo_open ? "> " : ">= ") << lo;
-      if (std::isfinite(hi)) os << (hi_open ? " and < " : " and <= ") << hi;
-      os << ", got " << n.Scalar();
-      ctx_.fail(n, dotted(key), os.str());
-    }
-    out = v;
+  /// Every key, then the groups and relations between them.
+  void read_all() {
+    for (const auto& k : section_.keys) read(k);
+    check_groups();
+    check_relations();
   }
-  template <class Int>
-  void integer(const char* key, Int& out, double lo, double hi) {
-    const YAML::Node n = get(key);
-    if (!n) return;
-    double v;
-    if (!parse(n, v) || v != std::floor(v))
-      ctx_.fail(n, dotted(key), "expected a whole number, got " + scalar_text(n));
-    if (v < lo || v > hi) {
-      std::ostringstream os;
-      os << "must be between " << static_cast<long long>(lo) << " and "
-         << static_cast<long long>(hi) << ", got " << n.Scalar();
-      ctx_.fail(n, dotted(key), os.str());
-    }
-    out = static_cast<Int>(v);
-  }
-  void text(const char* key, std::string& out, const std::vector<std::string>& choices) {
-    const YAML::Node n = get(key);
-    if (!n) return;
-    if (!n.IsScalar()) ctx_.fail(n, dotted(key), "expected a word, got " + scalar_text(n));
-    bool ok = false;
-    for (const auto& c : choices) ok = ok || c == n.Scalar();
-    if (!ok)
-      ctx_.fail(n, dotted(key), "unknown value '" + n.Scalar() + "' (valid: " + join(choices) + ")");
-    out = n.Scalar();
-  }
-  void flag(const char* key, bool& out) {
-    const YAML::Node n = get(key);
-    if (!n) return;
-    try {
-      out = n.as<bool>();
-    } catch (const YAML::Exception&) {
-      ctx_.fail(n, dotted(key), "expected true or false, got " + scalar_text(n));
-    }
-  }
-  YAML::Node get(const char* key) const {
+
+  YAML::Node get(const std::string& key) const {
     if (!node_.IsDefined() || node_.IsNull()) return YAML::Node(YAML::NodeType::Undefined);
     const YAML::Node n = node_[key];
     if (!n.IsDefined() || n.IsNull()) return YAML::Node(YAML::NodeType::Undefined);
     if (ctx_.origins) (*ctx_.origins)[dotted(key)] = ctx_.where(n, dotted(key));
     return n;
   }
-  std::string dotted(const char* key) const { return name_ + "." + key; }
+  std::string dotted(const std::string& key) const { return section_.name + "." + key; }
 
  private:
+  void read(const schema::Key& k) {
+    const YAML::Node n = get(k.name);
+    if (!n || k.kind == schema::Kind::List) return;  // lists are read by their owner
+    switch (k.kind) {
+      case schema::Kind::Real:
+      case schema::Kind::Integer: {
+        double v;
+        if (!parse(n, v) || (k.kind == schema::Kind::Integer && v != std::floor(v)))
+          ctx_.fail(n, dotted(k.name),
+                    std::string(k.kind == schema::Kind::Integer ? "expected a whole number, got "
+                                                                : "expected a number, got ") +
+                        scalar_text(n));
+        if (const std::string e = k.range_error(v, n.Scalar()); !e.empty())
+          ctx_.fail(n, dotted(k.name), e);
+        k.set_number(values_, v);
+        break;
+      }
+      case schema::Kind::Word: {
+        if (!n.IsScalar()) ctx_.fail(n, dotted(k.name), "expected a word, got " + scalar_text(n));
+        bool ok = false;
+        for (const auto& c : k.choices) ok = ok || c == n.Scalar();
+        if (!ok)
+          ctx_.fail(n, dotted(k.name),
+                    "unknown value '" + n.Scalar() + "' (valid: " + join(k.choices) + ")");
+        k.set_word(values_, n.Scalar());
+        break;
+      }
+      case schema::Kind::Flag: {
+        bool b = false;
+        try {
+          b = n.as<bool>();
+        } catch (const YAML::Exception&) {
+          ctx_.fail(n, dotted(k.name), "expected true or false, got " + scalar_text(n));
+        }
+        k.set_number(values_, b ? 1 : 0);
+        break;
+      }
+      case schema::Kind::List: break;
+    }
+  }
+
+  /// Keys given together or not at all (material ks, kb, mass): names the first one missing.
+  void check_groups() const {
+    const auto& group = section_.all_or_none;
+    if (group.empty()) return;
+    int given = 0;
+    std::string missing, all;
+    for (std::size_t i = 0; i < group.size(); ++i) {
+      const bool set = section_.find(group[i])->get_number(values_) != 0;
+      given += set;
+      if (!set && missing.empty()) missing = group[i];
+      all += (i == 0 ? "" : i + 1 == group.size() ? " and " : ", ") + group[i];
+    }
+    if (given != 0 && given != static_cast<int>(group.size()))
+      ctx_.fail(node_, dotted(missing), all + " are given together or not at all");
+  }
+
+  /// The error names a key of the pair that a --set override gave, else the one the relation
+  /// blames if the file sets it (its line), else the other (the defaults satisfy every
+  /// relation, so one of the two is always set when it fails).
+  void check_relations() const {
+    for (const auto& r : section_.relations) {
+      const double a = section_.find(r.lhs)->get_number(values_);
+      const double b = section_.find(r.rhs)->get_number(values_);
+      if (r.holds(a, b)) continue;
+      const std::string first = r.blame.empty() ? r.lhs : r.blame;
+      const std::string second = first == r.lhs ? r.rhs : r.lhs;
+      const auto by_set = [&](const std::string& k) { return ctx_.overrides.count(dotted(k)) > 0; };
+      const auto given = [&](const std::string& k) { return bool(get(k)); };
+      const std::string& key = by_set(first)    ? first
+                               : by_set(second) ? second
+                               : given(first)   ? first
+                               : given(second)  ? second
+                                                : first;
+      const YAML::Node n = get(key);
+      ctx_.fail(n ? n : node_, dotted(key),
+                "need " + dotted(r.lhs) + " " + r.op + " " + dotted(r.rhs) + ", got " + num(a) +
+                    (r.op == "<" ? " >= " : " > ") + num(b));
+    }
+  }
+
+  static std::string num(double v) {  // enough digits that two values in a message differ
+    std::ostringstream os;
+    os << std::setprecision(10) << v;
+    return os.str();
+  }
   static bool parse(const YAML::Node& n, double& v) {
     if (!n.IsScalar()) return false;
     try {
@@ -142,7 +186,8 @@ class Section {
       return false;
     }
   }
-  std::string name_;
+  const schema::Section& section_;
+  void* values_;
   const Context& ctx_;
   YAML::Node node_;
 };
@@ -258,140 +303,24 @@ Params parse(YAML::Node root, Context& ctx) {
   if (root.IsNull() || !root.IsDefined()) root = YAML::Node(YAML::NodeType::Map);
   if (!root.IsMap())
     throw InputError(ctx.file + ":1:1: the configuration must be a map of sections");
-  const std::vector<std::string> sections{"mesh",    "material", "integrator",
-                                          "contact", "protocol", "output"};
+  std::vector<std::string> sections;
+  for (const auto& cs : config_schema()) sections.push_back(cs.section->name);
   for (auto it = root.begin(); it != root.end(); ++it) {
     const std::string key = it->first.Scalar();
     bool ok = false;
     for (const auto& s : sections) ok = ok || s == key;
     if (!ok) ctx.fail(it->first, key, "unknown section (valid: " + join(sections) + ")");
   }
-
-  Section mesh(root, "mesh", ctx, {"shape", "nodes", "size", "seed", "lloyd_iterations"});
-  mesh.text("shape", p.mesh.shape, {"square", "disk"});
-  // Upper bounds keep a typo from a run of days or an allocation that fails (1e6 nodes is 20x
-  // the largest sheet studied; Lloyd converges in tens of iterations).
-  mesh.integer("nodes", p.mesh.nodes, 10, 1e6);
-  mesh.number("size", p.mesh.size, 0, kInf, true);
-  mesh.integer("seed", p.mesh.seed, 0, 9007199254740992.0);
-  mesh.integer("lloyd_iterations", p.mesh.lloyd_iterations, 0, 1000);
-
-  Section mat(root, "material",ctx, {"thickness", "young_modulus", "density", "poisson", "ks", "kb",
-                                     "mass", "mass_scale", "drag_ratio", "internal_damping_ratio"});
-  auto& m = p.material;
-  mat.number("thickness", m.thickness, 0, kInf, true);
-  mat.number("young_modulus", m.young_modulus, 0, kInf, true);
-  mat.number("density", m.density, 0, kInf, true);
-  mat.number("poisson", m.poisson, 1.0 / 3.0 - 1e-12, 1.0 / 3.0 + 1e-12);
-  mat.number("ks", m.ks, 0, kInf, true);
-  mat.number("kb", m.kb, 0, kInf, true);
-  mat.number("mass", m.mass, 0, kInf, true);
-  const int direct = (m.ks > 0) + (m.kb > 0) + (m.mass > 0);
-  if (direct != 0 && direct != 3) {
-    const char* missing = m.ks > 0 ? (m.kb > 0 ? "mass" : "kb") : "ks";
-    ctx.fail(root["material"], std::string("material.") + missing,
-             "ks, kb and mass are given together or not at all");
-  }
-  mat.number("mass_scale", m.mass_scale, 0, kInf, true);
-  mat.number("drag_ratio", m.drag_ratio, 0, kInf);
-  mat.number("internal_damping_ratio", m.internal_damping_ratio, 0, kInf);
-
-  Section in(root, "integrator", ctx,
-             {"mode_initial", "bdf_order", "rtol", "atol", "h_init", "h_min", "h_max",
-              "max_growth", "newton_tol", "newton_max_iters", "newton_target", "linear_solver",
-              "block_size", "coarse_nodes", "cg_tol", "cg_tol_max", "cg_max_iters", "switch_up",
-              "switch_down", "switch_window", "switch_min_steps", "explicit_rtol",
-              "explicit_h_start", "plasticity", "plastic_c0", "plastic_gamma", "plastic_rate"});
-  auto& s = p.integrator;
-  std::string mode = s.mode_initial == IntegrationMode::Implicit ? "implicit" : "explicit";
-  in.text("mode_initial", mode, {"implicit", "explicit"});
-  s.mode_initial = parse_integration_mode(mode);
-  in.integer("bdf_order", s.bdf_order, 1, 4);
-  in.number("rtol", s.rtol, 0, kInf, true);
-  in.number("atol", s.atol, 0, kInf, true);
-  // Steps below 1e-12 s do not advance t (of order seconds) by more than its rounding, a hang.
-  in.number("h_init", s.h_init, 1e-12, kInf);
-  in.number("h_min", s.h_min, 1e-12, kInf);
-  in.number("h_max", s.h_max, 0, kInf, true);
-  in.number("max_growth", s.max_growth, 1, kInf, true);
-  in.number("newton_tol", s.newton_tol, 0, kInf, true);
-  in.integer("newton_max_iters", s.newton_max_iters, 1, 1000);
-  in.integer("newton_target", s.newton_target, 1, 1000);
-  std::string solver = to_string(s.linear_solver);
-  in.text("linear_solver", solver, {"two_level", "block_jacobi", "cg", "incomplete_cholesky", "ldlt"});
-  s.linear_solver = parse_linear_solver(solver);
-  in.integer("block_size", s.block_size, 3, 600);  // dense blocks: memory ~ block_size x dofs
-  in.integer("coarse_nodes", s.coarse_nodes, 3, 1e9);
-  in.number("cg_tol", s.cg_tol, 0, 1, true, true);
-  in.number("cg_tol_max", s.cg_tol_max, 0, 1, true, true);
-  in.integer("cg_max_iters", s.cg_max_iters, 1, 1e9);
-  in.number("switch_up", s.switch_up, 0, kInf, true);
-  in.number("switch_down", s.switch_down, 0, kInf);
-  in.integer("switch_window", s.switch_window, 1, 1e6);
-  in.integer("switch_min_steps", s.switch_min_steps, 0, 1e9);
-  in.number("explicit_rtol", s.explicit_rtol, 0, kInf, true);
-  in.number("explicit_h_start", s.explicit_h_start, 0, kInf, true);
-  in.flag("plasticity", s.plasticity);
-  in.number("plastic_c0", s.plastic_c0, 0, 2, false, true);  // f divides by 2 - c0 (eq. 19)
-  in.number("plastic_gamma", s.plastic_gamma, 0, kInf);
-  in.number("plastic_rate", s.plastic_rate, 0, kInf, true);
-  // Relations between keys: the error names a key of the pair that a --set override gave, else
-  // the first of the pair that the file sets (its line), else the other (the defaults satisfy
-  // every relation, so one of the two is always set when it fails).
-  const auto relation = [&](bool ok, const char* a, const char* b, const std::string& what) {
-    if (ok) return;
-    const auto given = [&](const char* k) { return bool(in.get(k)); };
-    const auto by_set = [&](const char* k) { return ctx.overrides.count(in.dotted(k)) > 0; };
-    const char* key = by_set(a) ? a : by_set(b) ? b : given(a) ? a : given(b) ? b : a;
-    const YAML::Node n = in.get(key);
-    ctx.fail(n ? n : root, in.dotted(key), what);
-  };
-  const auto num = [](double v) {  // enough digits that two values in a message differ
-    std::ostringstream os;
-    os << std::setprecision(10) << v;
-    return os.str();
-  };
-  relation(s.h_min <= s.h_max, "h_min", "h_max",
-           "need integrator.h_min <= integrator.h_max, got " + num(s.h_min) + " > " + num(s.h_max));
-  relation(s.h_min <= s.h_init, "h_init", "h_min",
-           "need integrator.h_min <= integrator.h_init, got " + num(s.h_min) + " > " +
-               num(s.h_init));
-  relation(s.h_init <= s.h_max, "h_init", "h_max",
-           "need integrator.h_init <= integrator.h_max, got " + num(s.h_init) + " > " +
-               num(s.h_max));
-  relation(s.cg_tol <= s.cg_tol_max, "cg_tol", "cg_tol_max",
-           "need integrator.cg_tol <= integrator.cg_tol_max, got " + num(s.cg_tol) + " > " +
-               num(s.cg_tol_max));
-  relation(s.switch_down < s.switch_up, "switch_down", "switch_up",
-           "need integrator.switch_down < integrator.switch_up, got " + num(s.switch_down) +
-               " >= " + num(s.switch_up));
-
-  Section ct(root, "contact", ctx, {"enabled", "sigma", "refinement", "stiffness", "skin",
-                                          "fold_barrier"});
-  ct.flag("enabled", p.contact.enabled);
-  ct.number("sigma", p.contact.sigma, 0, kInf);
-  ct.text("refinement", p.contact.refinement, {"auto", "0", "1", "2", "3"});
-  ct.number("stiffness", p.contact.stiffness, 0, kInf);
-  ct.number("skin", p.contact.skin, 0, 10);
-  ct.flag("fold_barrier", p.contact.fold_barrier);
-
-  Section pr(root, "protocol", ctx, {"cycles", "t_max", "stages"});
-  pr.integer("cycles", p.protocol.cycles, 1, 1e6);
-  pr.number("t_max", p.protocol.t_max, 0, kInf, true);
-  const YAML::Node stages = pr.get("stages");
-  if (stages) {
-    if (!stages.IsSequence())
+  for (const auto& cs : config_schema()) {
+    SectionReader reader(root, *cs.section, cs.of(p), ctx);
+    reader.read_all();
+    if (cs.section->name != "protocol") continue;
+    // The stage list: kept as YAML, validated by the stage registry (it knows the stage types).
+    const YAML::Node stages = reader.get("stages");
+    if (stages && !stages.IsSequence())
       ctx.fail(stages, "protocol.stages", "expected a list of stages, got " + scalar_text(stages));
-    p.protocol.stages = stages;
-  } else {
-    p.protocol.stages = YAML::Node(YAML::NodeType::Sequence);
+    p.protocol.stages = stages ? stages : YAML::Node(YAML::NodeType::Sequence);
   }
-
-  Section out(root, "output", ctx, {"dt", "checkpoint_wall_s", "crease_threshold", "xdmf"});
-  out.number("dt", p.output.dt, 1e-6, kInf);  // every frame ends a chunk of steps
-  out.number("checkpoint_wall_s", p.output.checkpoint_wall_s, 0, kInf);
-  out.number("crease_threshold", p.output.crease_threshold, 0, 4, true);
-  out.flag("xdmf", p.output.xdmf);
   return p;
 }
 
@@ -454,78 +383,26 @@ std::string resolved_yaml(const Params& p) {
   YAML::Emitter e;
   e.SetDoublePrecision(17);
   e << YAML::BeginMap;
-  e << YAML::Key << "mesh" << YAML::Value << YAML::BeginMap;
-  e << YAML::Key << "shape" << YAML::Value << p.mesh.shape;
-  e << YAML::Key << "nodes" << YAML::Value << p.mesh.nodes;
-  e << YAML::Key << "size" << YAML::Value << p.mesh.size;
-  e << YAML::Key << "seed" << YAML::Value << p.mesh.seed;
-  e << YAML::Key << "lloyd_iterations" << YAML::Value << p.mesh.lloyd_iterations;
-  e << YAML::EndMap;
-  const auto& m = p.material;
-  e << YAML::Key << "material" << YAML::Value << YAML::BeginMap;
-  e << YAML::Key << "thickness" << YAML::Value << m.thickness;
-  e << YAML::Key << "young_modulus" << YAML::Value << m.young_modulus;
-  e << YAML::Key << "density" << YAML::Value << m.density;
-  e << YAML::Key << "poisson" << YAML::Value << m.poisson;
-  if (m.ks > 0) {
-    e << YAML::Key << "ks" << YAML::Value << m.ks;
-    e << YAML::Key << "kb" << YAML::Value << m.kb;
-    e << YAML::Key << "mass" << YAML::Value << m.mass;
+  for (const auto& cs : config_schema()) {
+    const void* values = cs.of_const(p);
+    e << YAML::Key << cs.section->name << YAML::Value << YAML::BeginMap;
+    for (const auto& k : cs.section->keys) {
+      if (k.kind == schema::Kind::List) {
+        e << YAML::Key << k.name << YAML::Value << p.protocol.stages;
+        continue;
+      }
+      if (k.zero_is_unset && k.get_number(values) == 0) continue;
+      e << YAML::Key << k.name << YAML::Value;
+      switch (k.kind) {
+        case schema::Kind::Real: e << k.get_number(values); break;
+        case schema::Kind::Integer: e << static_cast<long long>(k.get_number(values)); break;
+        case schema::Kind::Flag: e << (k.get_number(values) != 0); break;
+        case schema::Kind::Word: e << k.get_word(values); break;
+        case schema::Kind::List: break;
+      }
+    }
+    e << YAML::EndMap;
   }
-  e << YAML::Key << "mass_scale" << YAML::Value << m.mass_scale;
-  e << YAML::Key << "drag_ratio" << YAML::Value << m.drag_ratio;
-  e << YAML::Key << "internal_damping_ratio" << YAML::Value << m.internal_damping_ratio;
-  e << YAML::EndMap;
-  const auto& s = p.integrator;
-  e << YAML::Key << "integrator" << YAML::Value << YAML::BeginMap;
-  e << YAML::Key << "mode_initial" << YAML::Value
-    << (s.mode_initial == IntegrationMode::Implicit ? "implicit" : "explicit");
-  e << YAML::Key << "bdf_order" << YAML::Value << s.bdf_order;
-  e << YAML::Key << "rtol" << YAML::Value << s.rtol;
-  e << YAML::Key << "atol" << YAML::Value << s.atol;
-  e << YAML::Key << "h_init" << YAML::Value << s.h_init;
-  e << YAML::Key << "h_min" << YAML::Value << s.h_min;
-  e << YAML::Key << "h_max" << YAML::Value << s.h_max;
-  e << YAML::Key << "max_growth" << YAML::Value << s.max_growth;
-  e << YAML::Key << "newton_tol" << YAML::Value << s.newton_tol;
-  e << YAML::Key << "newton_max_iters" << YAML::Value << s.newton_max_iters;
-  e << YAML::Key << "newton_target" << YAML::Value << s.newton_target;
-  e << YAML::Key << "linear_solver" << YAML::Value << to_string(s.linear_solver);
-  e << YAML::Key << "block_size" << YAML::Value << s.block_size;
-  e << YAML::Key << "coarse_nodes" << YAML::Value << s.coarse_nodes;
-  e << YAML::Key << "cg_tol" << YAML::Value << s.cg_tol;
-  e << YAML::Key << "cg_tol_max" << YAML::Value << s.cg_tol_max;
-  e << YAML::Key << "cg_max_iters" << YAML::Value << s.cg_max_iters;
-  e << YAML::Key << "switch_up" << YAML::Value << s.switch_up;
-  e << YAML::Key << "switch_down" << YAML::Value << s.switch_down;
-  e << YAML::Key << "switch_window" << YAML::Value << s.switch_window;
-  e << YAML::Key << "switch_min_steps" << YAML::Value << s.switch_min_steps;
-  e << YAML::Key << "explicit_rtol" << YAML::Value << s.explicit_rtol;
-  e << YAML::Key << "explicit_h_start" << YAML::Value << s.explicit_h_start;
-  e << YAML::Key << "plasticity" << YAML::Value << s.plasticity;
-  e << YAML::Key << "plastic_c0" << YAML::Value << s.plastic_c0;
-  e << YAML::Key << "plastic_gamma" << YAML::Value << s.plastic_gamma;
-  e << YAML::Key << "plastic_rate" << YAML::Value << s.plastic_rate;
-  e << YAML::EndMap;
-  e << YAML::Key << "contact" << YAML::Value << YAML::BeginMap;
-  e << YAML::Key << "enabled" << YAML::Value << p.contact.enabled;
-  e << YAML::Key << "sigma" << YAML::Value << p.contact.sigma;
-  e << YAML::Key << "refinement" << YAML::Value << p.contact.refinement;
-  e << YAML::Key << "stiffness" << YAML::Value << p.contact.stiffness;
-  e << YAML::Key << "skin" << YAML::Value << p.contact.skin;
-  e << YAML::Key << "fold_barrier" << YAML::Value << p.contact.fold_barrier;
-  e << YAML::EndMap;
-  e << YAML::Key << "protocol" << YAML::Value << YAML::BeginMap;
-  e << YAML::Key << "cycles" << YAML::Value << p.protocol.cycles;
-  e << YAML::Key << "t_max" << YAML::Value << p.protocol.t_max;
-  e << YAML::Key << "stages" << YAML::Value << p.protocol.stages;
-  e << YAML::EndMap;
-  e << YAML::Key << "output" << YAML::Value << YAML::BeginMap;
-  e << YAML::Key << "dt" << YAML::Value << p.output.dt;
-  e << YAML::Key << "checkpoint_wall_s" << YAML::Value << p.output.checkpoint_wall_s;
-  e << YAML::Key << "crease_threshold" << YAML::Value << p.output.crease_threshold;
-  e << YAML::Key << "xdmf" << YAML::Value << p.output.xdmf;
-  e << YAML::EndMap;
   e << YAML::EndMap;
   return std::string(e.c_str()) + "\n";
 }

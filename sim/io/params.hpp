@@ -1,9 +1,12 @@
-// Every parameter of a run, in one typed tree with its defaults. Filled
-// from YAML by load_config (config.hpp), printed back whole by resolved_yaml and stored in every
-// output file. Keys are the member names; docs/CONFIG.md lists them with types and ranges.
+// Every parameter of a run, in one typed tree with its defaults (the member initialisers here
+// and in the structs it reuses: MeshSpec, IntegratorSettings). Filled from YAML by load_config
+// (config.hpp), printed back whole by resolved_yaml and stored in every output file. Keys are
+// the member names; their ranges, units and meanings are declared once in config_schema.cpp.
 #pragma once
 
+#include "sim/contact/contact_term.hpp"
 #include "sim/integrate/settings.hpp"
+#include "sim/mesh/generate.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -12,14 +15,6 @@
 #include <string>
 
 namespace crumple {
-
-struct MeshParams {
-  std::string shape = "square";  ///< square | disk
-  int nodes = 1000;              ///< approximate number of nodes: the resolution knob
-  double size = 0.1;             ///< side length or diameter (m)
-  std::uint64_t seed = 1;        ///< seed of the random mesh
-  int lloyd_iterations = 60;
-};
 
 struct MaterialParams {
   // Physical description (paper eq. 5-7), used unless ks, kb and mass are all given.
@@ -39,14 +34,14 @@ struct ContactParams {
   double sigma = 0;              ///< interaction range (m); 0: h_eff
   std::string refinement = "auto";  ///< auto | 0 | 1 | 2 | 3
   double stiffness = 0;          ///< contact stiffness; 0: ks
-  double skin = 0.5;             ///< candidate-list skin, fraction of sigma
+  double skin = ContactSettings{}.skin;  ///< candidate-list skin, fraction of sigma
   bool fold_barrier = true;      ///< keep hinges from folding through themselves
 };
 
 struct ProtocolParams {
   int cycles = 1;
   double t_max = 1e30;           ///< cap on the simulated time of the run (s)
-  YAML::Node stages;             ///< the stage list, validated by the stage registry
+  YAML::Node stages{YAML::NodeType::Sequence};  ///< the stage list, validated by the stage registry
   std::string stages_source;     ///< where the list came from: the file, or "--set protocol.stages=..."
   /// Stage parameters given by `--set protocol.stages.TYPE.KEY=V`: "protocol.stages[k].KEY" ->
   /// "--set ..." as given, so the stage registry names the argument in its messages.
@@ -56,12 +51,11 @@ struct ProtocolParams {
 struct OutputParams {
   double dt = 0.01;              ///< simulated time between frames (s)
   double checkpoint_wall_s = 300;
-  double crease_threshold = 0.05;  ///< |p| above which a hinge counts as creased
   bool xdmf = true;
 };
 
 struct Params {
-  MeshParams mesh;
+  MeshSpec mesh;                 ///< the sheet (sim/mesh/generate.hpp); size in m
   MaterialParams material;
   IntegratorSettings integrator;
   ContactParams contact;

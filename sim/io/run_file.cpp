@@ -338,10 +338,8 @@ void write_all(H5::H5File& file, const RunRecord& r) {
     H5::Group g = h5::group(cycles, numbered(c.cycle, 4));
     h5::write(g, "x", to_vec(c.x), nx3(c.x));
     h5::write(g, "p", to_vec(c.p));
-    h5::write(g, "crease_mask", c.crease_mask);
     h5::attr(g, "t", c.t);
     h5::attr(g, "cycle", std::int64_t{c.cycle});
-    h5::attr(g, "crease_threshold", c.crease_threshold);
   }
   H5::Group stage_ends = h5::group(root, "stage_ends");
   for (std::size_t k = 0; k < r.stage_ends.size(); ++k) {
@@ -435,15 +433,11 @@ RunRecord read_run_file(const std::string& path) {
       CycleRecord c;
       c.x = to_eigen(h5::read_doubles(g, "x"));
       c.p = to_eigen(h5::read_doubles(g, "p"));
-      c.crease_mask = h5::read_bytes(g, "crease_mask");
       c.t = h5::attr_double(g, "t");
       c.cycle = static_cast<int>(h5::attr_int(g, "cycle"));
-      c.crease_threshold = h5::attr_double(g, "crease_threshold");
       const std::string at = "/cycles/" + name;
       check.length(at + "/x", c.x, 3 * n, "3 per mesh node");
       check.length(at + "/p", c.p, m, "one per hinge");
-      if (c.crease_mask.size() != static_cast<std::size_t>(m))
-        check.fail(at + "/crease_mask", "expected one value per hinge");
       r.cycles.push_back(std::move(c));
     }
     if (h5::exists(root, "stage_ends")) {  // files written before per-stage records lack it

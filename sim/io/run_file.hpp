@@ -30,9 +30,7 @@ struct FrameRecord {
 struct CycleRecord {
   int cycle = 0;
   double t = 0;
-  VecX x, p;
-  std::vector<std::uint8_t> crease_mask;
-  double crease_threshold = 0;
+  VecX x, p;  ///< which hinges count as creased is the analysis's call (analysis/README.md)
 };
 
 /// The plastic field at the end of one stage of one cycle (per-stage crease accounting).

@@ -20,7 +20,7 @@ namespace crumple {
 
 struct MeshSpec {
   std::string shape = "square";  ///< "square" or "disk"
-  double size = 1.0;             ///< side length or diameter, simulation length units
+  double size = 0.1;             ///< side length or diameter (m in a run: a 10 cm sheet)
   int nodes = 1000;              ///< approximate total number of nodes (>= 10)
   std::uint64_t seed = 1;        ///< seed of the interior points
   int lloyd_iterations = 60;     ///< Lloyd steps (>= 0)

@@ -163,6 +163,7 @@ TEST(GenerateMesh, SizeScalesTheSheet) {
   MeshSpec spec;
   spec.shape = "disk";
   spec.nodes = 400;
+  spec.size = 1.0;
   const Mesh unit = generate_mesh(spec);
   spec.size = 0.1;
   const Mesh small = generate_mesh(spec);
