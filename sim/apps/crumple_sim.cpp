@@ -6,16 +6,14 @@
 // RUN.h5.tmp; rerun with --resume), 128 + N stopped by signal N after a checkpoint, 1 anything
 // else (a write failure among them: the last checkpoint is kept).
 #include "crumple/version.hpp"
-#include "protocols/integrator_stepper.hpp"
 #include "protocols/registry.hpp"
 #include "sim/apps/output_paths.hpp"
 #include "sim/apps/resume.hpp"
 #include "sim/apps/run_sink.hpp"
+#include "sim/assemble/simulation.hpp"
 #include "sim/core/stop_signal.hpp"
-#include "sim/contact/self_contact.hpp"
 #include "sim/io/config.hpp"
 #include "sim/io/config_doc.hpp"
-#include "sim/io/units.hpp"
 #include "sim/mesh/generate.hpp"
 #include "sim/mesh/quality.hpp"
 
@@ -116,6 +114,46 @@ int print_config(const Options& o) {
   return kExitOk;
 }
 
+/// The mesh, the model constants and the contact setup, as the run starts.
+void print_setup(const Mesh& mesh, const Simulation& run) {
+  const MeshQuality q = mesh_quality(mesh);
+  const ResolvedMaterial& mat = run.material();
+  std::fprintf(stderr,
+               "crumple-sim %s (%s): %s, %d nodes, %d triangles, min angle %.1f deg, edge CV "
+               "%.3f\n  ks %.4g N/m, kb %.4g J, m %.4g kg, h_eff %.4g m, b_iso %.3g, b_int %.3g\n",
+               kVersion, kGitRevision, mesh.shape.c_str(), mesh.num_nodes(), mesh.num_triangles(),
+               q.min_angle_deg, q.edge_cv, mat.model.ks, mat.model.kb, mat.model.mass, mat.h_eff,
+               mat.model.b_iso, mat.model.b_int);
+  if (!run.contact()) return;
+  if (run.contact_range_raised())
+    std::fprintf(stderr, "  contact: mesh too coarse to resolve h_eff; range raised to half an edge\n");
+  std::fprintf(stderr, "  contact: sigma %.4g m, %d sites\n", run.contact_settings().sigma,
+               static_cast<int>(run.contact()->pairs->sites().size()));
+}
+
+/// What the run did: time, frames, steps per mode, wall per stage, the cost of contact (this
+/// process's share: a resumed run counts from the resume).
+void print_summary(const std::string& output, const State& s, const RunRecord& rec, Simulation& run) {
+  const IntegratorSummary& sum = run.integrator().summary();
+  std::fprintf(stderr, "crumple-sim: wrote %s (t = %g s, %zu frames, %zu cycles)\n%s",
+               output.c_str(), s.t, rec.frames.size(), rec.cycles.size(), sum.text().c_str());
+  std::string stages_line = "by stage:";
+  for (const auto& [type, wall] : run.runner().stage_wall())
+    stages_line += " " + type + " " + std::to_string(wall).substr(0, 8) + " s;";
+  std::fprintf(stderr, "%s\n", stages_line.c_str());
+  const SelfContact* contact = run.contact();
+  if (!contact) return;
+  const ContactStats& c = contact->pairs->stats();
+  const double sites = static_cast<double>(contact->pairs->sites().size());
+  std::fprintf(stderr,
+               "contact: %zu searches in %.3f s (%.3g us per site and search), force and "
+               "Jacobian %.3f s; %.1f%% of the integration wall time\n",
+               c.searches, c.search_seconds,
+               c.searches ? 1e6 * c.search_seconds / (double(c.searches) * sites) : 0.0,
+               c.eval_seconds,
+               sum.wall_total > 0 ? 100.0 * (c.search_seconds + c.eval_seconds) / sum.wall_total : 0.0);
+}
+
 int run(const Options& o) {
   if (o.print_config) return print_config(o);
   const std::string tmp = o.output + ".tmp";
@@ -123,7 +161,6 @@ int run(const Options& o) {
   const Params p = load_run(o, tmp, rec);
   const auto& registry = StageRegistry::builtin();
   validate_protocol(p, registry);
-  const YAML::Node& stages = p.protocol.stages;
   const OutputPaths paths = check_output_paths(o.output, p.output.xdmf, o.resume, o.force);
 
   if (o.threads > 0) omp_set_num_threads(o.threads);
@@ -134,7 +171,8 @@ int run(const Options& o) {
     rec.meta.start_time = utc_now();
   }
   const Mesh& mesh = rec.mesh;
-  const ResolvedMaterial mat = resolve_material(p.material, mesh.total_area(), mesh.num_nodes());
+  Simulation run(p, mesh, registry, o.quiet, stop_requested);
+  const ResolvedMaterial& mat = run.material();
   rec.meta.program_version = kVersion;
   rec.meta.git_revision = kGitRevision;
   rec.meta.seed = p.mesh.seed;
@@ -142,93 +180,15 @@ int run(const Options& o) {
   rec.meta.status = "running";
   rec.meta.ks = mat.model.ks, rec.meta.kb = mat.model.kb, rec.meta.mass = mat.model.mass;
   rec.meta.h_eff = mat.h_eff;
+  if (!o.quiet) print_setup(mesh, run);
 
-  if (!o.quiet) {
-    const MeshQuality q = mesh_quality(mesh);
-    std::fprintf(stderr,
-                 "crumple-sim %s (%s): %s, %d nodes, %d triangles, min angle %.1f deg, edge CV "
-                 "%.3f\n  ks %.4g N/m, kb %.4g J, m %.4g kg, h_eff %.4g m, b_iso %.3g, b_int %.3g\n",
-                 kVersion, kGitRevision, mesh.shape.c_str(), mesh.num_nodes(),
-                 mesh.num_triangles(), q.min_angle_deg, q.edge_cv, mat.model.ks, mat.model.kb,
-                 mat.model.mass, mat.h_eff, mat.model.b_iso, mat.model.b_int);
-  }
-
-  SheetModel model(mesh, mat.model);
-  // Self-contact (paper §2.4): range sigma = h_eff unless set, stiffness ks unless set; its
-  // candidate list is refreshed before every step; stages may switch it off (unfold).
-  std::unique_ptr<SelfContact> contact;
-  bool contact_on = false;
-  if (p.contact.enabled) {
-    ContactSettings cs;
-    cs.ks = p.contact.stiffness > 0 ? p.contact.stiffness : mat.model.ks;
-    // sigma = h_eff (paper §2.4) unless the mesh is too coarse to resolve it: with site
-    // refinement capped at level 3 the sites are a quarter edge apart, and layers slip between
-    // sites unless the range covers them (measured: a flat sheet stays force-free up to
-    // 0.79 edge at level 3), so the automatic range is at least half an edge.
-    const double floor = 0.5 * mesh.mean_edge_length();
-    cs.sigma = p.contact.sigma > 0 ? p.contact.sigma : std::max(mat.h_eff, floor);
-    if (p.contact.sigma <= 0 && floor > mat.h_eff && !o.quiet)
-      std::fprintf(stderr,
-                   "  contact: mesh too coarse to resolve h_eff; range raised to half an edge\n");
-    cs.level = p.contact.refinement == "auto" ? -1 : std::stoi(p.contact.refinement);
-    cs.skin = p.contact.skin;
-    contact = std::make_unique<SelfContact>(mesh, cs, p.contact.fold_barrier);
-    contact->add_to(model);
-    contact_on = true;
-    if (!o.quiet)
-      std::fprintf(stderr, "  contact: sigma %.4g m, %d sites\n", cs.sigma,
-                   static_cast<int>(contact->pairs->sites().size()));
-  }
-  Integrator integ(model, p.integrator);
-  if (contact)
-    integ.before_step = [&](const State& st) {
-      if (!contact_on) return false;
-      // True when a re-search found a pair in range that the old list lacked: the explicit
-      // step's reused last stage (FSAL) was evaluated without it.
-      return contact->update(st.x);
-    };
-  IntegratorStepper stepper(integ);
-  SheetInfo info;
-  info.size = p.mesh.size;
-  info.area = mesh.total_area();
-  info.h_eff = mat.h_eff;
-  info.ks = mat.model.ks, info.kb = mat.model.kb, info.mass = mat.model.mass;
-  info.spacing = mesh.mean_edge_length();
-  RunnerSettings rs;
-  rs.cycles = p.protocol.cycles;
-  rs.t_max = p.protocol.t_max;
-  rs.frame_dt = p.output.dt;
-  rs.checkpoint_wall_s = p.output.checkpoint_wall_s;
-  rs.quiet = o.quiet;
-  rs.seed = p.mesh.seed;
-  rs.stop_requested = stop_requested;
-  const std::string file = p.protocol.stages_source;
-  ProtocolRunner runner(
-      model, stepper,
-      [&](int k) {
-        return registry.make(stages[k], file, "protocol.stages[" + std::to_string(k) + "]",
-                             &p.protocol.stage_sets);
-      },
-      static_cast<int>(stages.size()), info, rs);
-
-  if (contact)
-    runner.set_contact_switch(
-        [&](bool on) {
-          if (on == contact_on) return;
-          if (on) {
-            contact->add_to(model);
-          } else {
-            contact->remove_from(model);
-          }
-          contact_on = on;
-        },
-        [&] { return contact_on; });
+  Integrator& integ = run.integrator();
+  const SelfContact* contact = run.contact();
   // The sink also records the contact term's costs (/log@contact_*) for benchmarks.
-  FileSink sink(rec, tmp, integ,
-                contact ? contact->pairs.get() : nullptr);
-  State s = model.rest_state();
+  FileSink sink(rec, tmp, integ, contact ? contact->pairs.get() : nullptr);
+  State s = run.model().rest_state();
   const std::optional<Checkpoint> resume_from = rec.checkpoint;
-  const bool complete = runner.run(s, sink, resume_from ? &*resume_from : nullptr);
+  const bool complete = run.run(s, sink, resume_from ? &*resume_from : nullptr);
 
   rec.meta.end_time = utc_now();
   rec.meta.status = complete ? "complete" : "complete: stopped at protocol.t_max";
@@ -238,28 +198,7 @@ int run(const Options& o) {
     write_xdmf(paths.xdmf + ".new", std::filesystem::path(paths.run).filename().string(), rec);
   rename_or_throw(paths.tmp, paths.run);
   if (!paths.xdmf.empty()) rename_or_throw(paths.xdmf + ".new", paths.xdmf);
-  if (!o.quiet) {
-    std::fprintf(stderr, "crumple-sim: wrote %s (t = %g s, %zu frames, %zu cycles)\n%s",
-                 o.output.c_str(), s.t, rec.frames.size(), rec.cycles.size(),
-                 integ.summary().text().c_str());
-    std::string stages_line = "by stage:";
-    for (const auto& [type, wall] : runner.stage_wall())
-      stages_line += " " + type + " " + std::to_string(wall).substr(0, 8) + " s;";
-    std::fprintf(stderr, "%s\n", stages_line.c_str());
-    if (contact) {
-      // This process's share (a resumed run counts from the resume).
-      const ContactStats& c = contact->pairs->stats();
-      const double wall = integ.summary().wall_total;
-      std::fprintf(stderr,
-                   "contact: %zu searches in %.3f s (%.3g us per site and search), force and "
-                   "Jacobian %.3f s; %.1f%% of the integration wall time\n",
-                   c.searches, c.search_seconds,
-                   c.searches ? 1e6 * c.search_seconds / (double(c.searches) * contact->pairs->sites().size())
-                              : 0.0,
-                   c.eval_seconds,
-                   wall > 0 ? 100.0 * (c.search_seconds + c.eval_seconds) / wall : 0.0);
-    }
-  }
+  if (!o.quiet) print_summary(o.output, s, rec, run);
   return kExitOk;
 }
 

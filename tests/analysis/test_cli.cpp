@@ -3,6 +3,7 @@
 // config (per-stage lengths, threshold rule, sensitivity table, increment fits, the new CSVs),
 // and bad input giving exit code 2 with nothing written.
 #include "tests/analysis/synthetic_run.hpp"
+#include "tests/support/scratch.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -31,7 +32,7 @@ std::vector<std::string> lines(const fs::path& f) {
 }
 
 fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("crumple_test_cli_" + name);
+  const fs::path d = crumple::testing::scratch_path("test_cli_" + name);
   fs::remove_all(d);
   fs::create_directories(d);
   return d;

@@ -4,6 +4,7 @@
 #include "analysis/io/run_reader.hpp"
 #include "analysis/run/config_params.hpp"
 #include "tests/analysis/synthetic_run.hpp"
+#include "tests/support/scratch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -39,7 +40,7 @@ TEST(Creases, LengthIsSumOfChosenRestLengths) {
 
 TEST(RunReader, ReadsWhatWasWritten) {
   const MeshData m = synth::square_grid_mesh(4, 2.0);
-  const auto path = std::filesystem::temp_directory_path() / "crumple_test_reader.h5";
+  const auto path = crumple::testing::scratch_path("test_reader.h5");
   std::vector<double> p(m.hinges.size(), 0.25);
   synth::write_run(path.string(), m, {p, p});
   const RunData r = read_run(path.string());

@@ -6,6 +6,7 @@
 #include "analysis/io/run_reader.hpp"
 #include "analysis/run/analyze_run.hpp"
 #include "tests/analysis/synthetic_run.hpp"
+#include "tests/support/scratch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -155,7 +156,7 @@ TEST(StageAccounting, AnalyzeRunReportsStagesThatAddUp) {
 
 TEST(RunReader, ReadsStageEnds) {
   const MeshData m = synth::square_grid_mesh(4, 0.1);
-  const auto path = (std::filesystem::temp_directory_path() / "crumple_test_stages.h5").string();
+  const auto path = crumple::testing::scratch_path("test_stages.h5").string();
   std::vector<double> p(m.hinges.size(), 0.0);
   synth::WriteOptions o;
   for (int c = 1; c <= 2; ++c)
@@ -190,7 +191,7 @@ TEST(RunReader, ReadsStageEnds) {
 
 TEST(RunReader, OldFileWithoutStageEndsWarns) {
   const MeshData m = synth::square_grid_mesh(4, 0.1);
-  const auto path = (std::filesystem::temp_directory_path() / "crumple_test_old.h5").string();
+  const auto path = crumple::testing::scratch_path("test_old.h5").string();
   synth::write_run(path, m, {std::vector<double>(m.hinges.size(), 0.3)});
   const RunData r = read_run(path);
   EXPECT_FALSE(r.has_stage_ends);

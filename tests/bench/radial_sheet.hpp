@@ -5,6 +5,7 @@
 #pragma once
 
 #include "protocols/registry.hpp"
+#include "sim/assemble/sheet_setup.hpp"
 #include "sim/contact/self_contact.hpp"
 #include "sim/io/params.hpp"
 #include "sim/mesh/generate.hpp"
@@ -39,6 +40,7 @@ inline void add_sheet_options(CLI::App& app, SheetChoice& c) {
 
 struct RadialSheet {
   Mesh mesh;
+  ResolvedMaterial material;
   ModelParams params;
   SheetInfo info;
   SheetChoice choice;
@@ -50,18 +52,14 @@ inline RadialSheet make_radial_sheet(int nodes, double mass_scale, const SheetCh
   s.choice = c;
   s.mass_scale = mass_scale;
   s.mesh = generate_mesh(MeshSpec{"disk", 0.1, nodes, c.mesh_seed});
-  const double h = 1e-3 * c.thickness_mm, Y = 1e9, rho = 1400;
-  const double kappa = Y * h * h * h / (12.0 * (1.0 - 1.0 / 9.0));
-  s.params.ks = std::sqrt(3.0) / 2.0 * Y * h;
-  s.params.kb = 2.0 * kappa / std::sqrt(3.0);
-  s.params.mass = mass_scale * rho * h * s.mesh.total_area() / s.mesh.num_nodes();
-  s.params.b_iso = 0.01 * std::sqrt(s.params.ks * s.params.mass);
-  s.params.b_int = 0.1 * std::sqrt(s.params.ks * s.params.mass);
-  s.info.size = 0.1;
-  s.info.area = s.mesh.total_area();
-  s.info.h_eff = std::sqrt(8 * s.params.kb / s.params.ks);
-  s.info.ks = s.params.ks, s.info.kb = s.params.kb, s.info.mass = s.params.mass;
-  s.info.spacing = s.mesh.mean_edge_length();
+  // The config's material (Mylar-like defaults: Y, density, drag, damping) at this thickness,
+  // through the simulator's own conversion (sim/io/units.hpp).
+  MaterialParams m;
+  m.thickness = 1e-3 * c.thickness_mm;
+  m.mass_scale = mass_scale;
+  s.material = resolve_material(m, s.mesh.total_area(), s.mesh.num_nodes());
+  s.params = s.material.model;
+  s.info = sheet_info(s.mesh, s.material, 0.1);
   return s;
 }
 
@@ -105,14 +103,11 @@ inline std::unique_ptr<Stage> begin_radial_stage(const RadialSheet& su, SheetMod
   return stage;
 }
 
-/// Self-contact as crumple-sim sets it up by default (sigma = max(h_eff, half an edge), the
-/// config's candidate-list skin, fold barrier), added to `model`.
+/// Self-contact as crumple-sim sets it up by default (the config's contact section through the
+/// run assembly's rule, sim/assemble/sheet_setup.hpp), added to `model`.
 inline std::unique_ptr<SelfContact> add_contact(const RadialSheet& su, SheetModel& model) {
-  ContactSettings cs;
-  cs.ks = su.params.ks;
-  cs.sigma = std::max(su.info.h_eff, 0.5 * su.info.spacing);
-  cs.skin = ContactParams{}.skin;
-  auto contact = std::make_unique<SelfContact>(su.mesh, cs);
+  const ContactSettings cs = contact_settings(ContactParams{}, su.mesh, su.material);
+  auto contact = std::make_unique<SelfContact>(su.mesh, cs, ContactParams{}.fold_barrier);
   contact->add_to(model);
   return contact;
 }

@@ -1,6 +1,7 @@
 // Self-avoidance under radial confinement (paper Fig. 5a, 8c): after the cutoff radius has
 // crumpled the disk, no two non-adjacent triangles intersect. The fast test uses a small disk
 // and a short compression; the `slow` one the 3000-node sheet confined into a ball.
+#include "sim/assemble/sheet_setup.hpp"
 #include "sim/contact/self_contact.hpp"
 #include "sim/model/hinge_geometry.hpp"
 #include "sim/mesh/generate.hpp"
@@ -29,10 +30,12 @@ std::pair<Mesh, State> confine(int nodes, double duration, bool with_contact) {
   std::unique_ptr<SelfContact> contact;
   Integrator integ(model, t.settings);
   if (with_contact) {
-    ContactSettings cs;
-    cs.ks = t.params.ks;
-    cs.sigma = std::max(t.info.h_eff, 0.5 * t.mesh.mean_edge_length());
-    contact = std::make_unique<SelfContact>(t.mesh, cs);
+    // The simulator's default contact (range rule of sim/assemble/sheet_setup.hpp).
+    ResolvedMaterial mat;
+    mat.model = t.params;
+    mat.h_eff = t.info.h_eff;
+    const ContactSettings cs = contact_settings(ContactParams{}, t.mesh, mat);
+    contact = std::make_unique<SelfContact>(t.mesh, cs, ContactParams{}.fold_barrier);
     contact->add_to(model);
     integ.before_step = [&](const State& s) { return contact->update(s.x); };
   }

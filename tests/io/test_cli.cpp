@@ -3,6 +3,7 @@
 // step log included; no final file exists before the end. (tests/corpus holds the many bad
 // inputs; these are the basic ones.)
 #include "sim/io/run_file.hpp"
+#include "tests/support/scratch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +22,8 @@ namespace fs = std::filesystem;
 using namespace crumple;
 
 namespace {
-const fs::path kDir = fs::temp_directory_path() / "crumple_cli_test";
+const crumple::testing::ScratchDir kScratch("cli_test");
+const fs::path kDir = kScratch.path;
 
 struct Result {
   int code;

@@ -5,6 +5,7 @@
 #include "sim/io/h5.hpp"
 #include "sim/io/run_file.hpp"
 #include "tests/support/grid_mesh.hpp"
+#include "tests/support/scratch.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -55,7 +56,7 @@ TEST(RunFile, RoundTripIsExact) {
   ck.apparatus.rolled = true, ck.apparatus.radius = 0.0177, ck.apparatus.axis_dir = Vec3(0, 1, 0);
   r.checkpoint = ck;
 
-  const std::string path = (std::filesystem::temp_directory_path() / "crumple_roundtrip.h5").string();
+  const std::string path = crumple::testing::scratch_path("roundtrip.h5").string();
   write_run_file_atomic(path, r);
   const RunRecord q = read_run_file(path);
   std::filesystem::remove(path);
@@ -114,7 +115,7 @@ TEST(RunFile, OlderLogWithoutTheAverageAndUnequalColumns) {
   row.t = 0.5, row.a_ratio = 1e-4, row.a_ratio_avg = 2e-4;
   r.log = {row, row, row};
   r.stage_ends.push_back({1, 0, "roll", 0.2, VecX::Zero(r.mesh.num_hinges()), 3.0});
-  const std::string path = (std::filesystem::temp_directory_path() / "crumple_oldlog.h5").string();
+  const std::string path = crumple::testing::scratch_path("oldlog.h5").string();
   write_run_file(path, r);
   {
     H5::H5File f(path, H5F_ACC_RDWR);
@@ -159,7 +160,7 @@ TEST(RunFile, FailedWriteKeepsThePreviousFile) {
   RunRecord r;
   r.mesh = crumple::testing::grid_mesh(12, 12, 0.1, 0.1, 0.0, 1);
   r.costs = RunCosts{0.5, 0.75, 3, 1.0};
-  const std::string path = (std::filesystem::temp_directory_path() / "crumple_fsize.h5").string();
+  const std::string path = crumple::testing::scratch_path("fsize.h5").string();
   write_run_file_atomic(path, r);
   const auto size_before = std::filesystem::file_size(path);
   State s;

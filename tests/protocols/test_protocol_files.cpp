@@ -2,6 +2,7 @@
 // time, through the real crumple-sim binary, giving a complete, readable run file.
 #include "sim/io/run_file.hpp"
 #include "tests/support/self_intersection.hpp"
+#include "tests/support/scratch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +14,8 @@ namespace fs = std::filesystem;
 using namespace crumple;
 
 TEST(ProtocolFiles, EveryFileRunsOnATinySheet) {
-  const fs::path dir = fs::temp_directory_path() / "crumple_protocol_smoke";
-  fs::create_directories(dir);
+  const crumple::testing::ScratchDir scratch("protocol_smoke");
+  const fs::path& dir = scratch.path;
   int count = 0;
   for (const auto& entry : fs::directory_iterator("protocols")) {
     if (entry.path().extension() != ".yaml") continue;
@@ -40,8 +41,8 @@ TEST(ProtocolFiles, EveryFileRunsOnATinySheet) {
 // unfolding included: no stored frame has a pair of non-adjacent triangles that intersect, and
 // the run file holds the plastic field at the end of every stage.
 TEST(ProtocolFiles, AxialCycleNeverPassesThroughItself) {
-  const fs::path dir = fs::temp_directory_path() / "crumple_axial_cycle";
-  fs::create_directories(dir);
+  const crumple::testing::ScratchDir scratch("axial_cycle");
+  const fs::path& dir = scratch.path;
   const fs::path out = dir / "cycle.h5";
   fs::remove(out);
   const std::string cmd = std::string(CRUMPLE_SIM) + " protocols/axial_crumpling.yaml -o " +
