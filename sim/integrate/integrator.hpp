@@ -100,6 +100,19 @@ class Integrator {
   /// The same from the hinge curvatures c of that state.
   double plastic_rate_from(const VecX& c, const VecX& p, VecX& g) const;
   void after_accept(const State& s, const Attempt& a, double h, int rejections);
+  // The steps of advance_to, in order (integrator.cpp).
+  void prepare_attempt(const State& s, bool implicit);
+  double plan_step(const State& s, double t_end, bool implicit, int rejections, double proposal,
+                   double wall0);
+  void attempt(const State& s, double h, bool implicit, Attempt& a);
+  void grow_after_accept(const Attempt& a, double h, double proposal, bool implicit,
+                         int rejections);
+  /// After a failed attempt: the step size of the retry (or a hand-over to the explicit mode);
+  /// throws NumericalFailure when a step at h_min fails.
+  void retry_after_rejection(const State& s, const Attempt& a, double h, bool implicit,
+                             double wall0);
+  /// The largest ratio of a step over the one before, for a step with `points` history points.
+  double ratio_limit(bool implicit, std::size_t points) const;
   /// explicit_h_start sqrt(m / ks): the first explicit step after a switch.
   double explicit_start_step() const {
     return settings_.explicit_h_start * std::sqrt(model_.params().mass / model_.params().ks);
