@@ -8,10 +8,23 @@
 
 namespace crumple {
 
+namespace {
+// A function-local static, so it exists before the first registrar appends to it, whatever the
+// order in which the stage files' static objects are constructed.
+std::vector<StageTypeFactory>& factories() {
+  static std::vector<StageTypeFactory> list;
+  return list;
+}
+}  // namespace
+
+StageRegistrar::StageRegistrar(StageTypeFactory factory) { factories().push_back(factory); }
+
+const std::vector<StageTypeFactory>& registered_stage_types() { return factories(); }
+
 const StageRegistry& StageRegistry::builtin() {
   static const StageRegistry reg = [] {
     StageRegistry r;
-    register_builtin_stages(r);
+    for (StageTypeFactory f : registered_stage_types()) r.add(f());
     return r;
   }();
   return reg;

@@ -1,5 +1,6 @@
-// Stage types registered by name (docs/MODEL.md §11.1). Built-in types are registered in
-// builtin_stages.cpp, one line each; adding a stage type is one C++ file plus one line there.
+// Stage types registered by name (docs/MODEL.md §11.1). Each built-in type registers itself in
+// its own file, protocols/stages/NAME.cpp, with CRUMPLE_REGISTER_STAGE; the build compiles every
+// file in that folder, so adding a stage type is one C++ file and no other edit.
 // An unknown name is rejected with the sorted list of valid names.
 #pragma once
 
@@ -8,6 +9,7 @@
 
 #include <functional>
 #include <map>
+#include <vector>
 
 namespace crumple {
 
@@ -50,7 +52,24 @@ class StageRegistry {
   std::map<std::string, StageType> types_;
 };
 
-/// Registers the built-in stage types (builtin_stages.cpp).
-void register_builtin_stages(StageRegistry& registry);
+/// A function returning a stage type's description; called once, by StageRegistry::builtin().
+using StageTypeFactory = StageType (*)();
+
+/// The factories registered with CRUMPLE_REGISTER_STAGE, in static-initialisation order, which
+/// is unspecified across files; the registry sorts the types by name, so nothing depends on it.
+const std::vector<StageTypeFactory>& registered_stage_types();
+
+/// Appends its factory to registered_stage_types() when constructed (before main).
+struct StageRegistrar {
+  explicit StageRegistrar(StageTypeFactory factory);
+};
 
 }  // namespace crumple
+
+/// Registers a built-in stage type from its own file: `CRUMPLE_REGISTER_STAGE(roll_stage_type);`
+/// at namespace scope, after the function. The factory runs only when the registry is first
+/// used, so no stage description is built during static initialisation. One per file (a second
+/// registrar's name would clash); test_stage_files ties each file NAME.cpp to the type NAME.
+/// The registrar only runs if its object file is linked: see protocols/CMakeLists.txt.
+#define CRUMPLE_REGISTER_STAGE(factory) \
+  static const ::crumple::StageRegistrar crumple_stage_registrar(&factory)

@@ -165,5 +165,6 @@ StageType compress_stage_type() {
   t.needs = {"rolled"};
   return t;
 }
+CRUMPLE_REGISTER_STAGE(compress_stage_type);
 
 }  // namespace crumple::stages

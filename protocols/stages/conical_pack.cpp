@@ -85,5 +85,6 @@ StageType conical_pack_stage_type() {
   t.make = [](const StageArgs& a) { return std::make_unique<ConicalPackStage>(a); };
   return t;
 }
+CRUMPLE_REGISTER_STAGE(conical_pack_stage_type);
 
 }  // namespace crumple::stages

@@ -110,5 +110,6 @@ StageType fold_stage_type() {
   t.make = [](const StageArgs& a) { return std::make_unique<FoldStage>(a); };
   return t;
 }
+CRUMPLE_REGISTER_STAGE(fold_stage_type);
 
 }  // namespace crumple::stages

@@ -96,5 +96,6 @@ StageType radial_confine_stage_type() {
   };
   return t;
 }
+CRUMPLE_REGISTER_STAGE(radial_confine_stage_type);
 
 }  // namespace crumple::stages

@@ -77,5 +77,6 @@ StageType release_stage_type() {
   };
   return t;
 }
+CRUMPLE_REGISTER_STAGE(release_stage_type);
 
 }  // namespace crumple::stages

@@ -165,5 +165,6 @@ StageType roll_stage_type() {
   t.provides = {"rolled"};
   return t;
 }
+CRUMPLE_REGISTER_STAGE(roll_stage_type);
 
 }  // namespace crumple::stages

@@ -75,5 +75,6 @@ StageType spherical_stamp_stage_type() {
   t.make = [](const StageArgs& a) { return std::make_unique<SphericalStampStage>(a); };
   return t;
 }
+CRUMPLE_REGISTER_STAGE(spherical_stamp_stage_type);
 
 }  // namespace crumple::stages

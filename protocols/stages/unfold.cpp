@@ -114,5 +114,6 @@ StageType unfold_stage_type() {
   t.make = [](const StageArgs& a) { return std::make_unique<UnfoldStage>(a); };
   return t;
 }
+CRUMPLE_REGISTER_STAGE(unfold_stage_type);
 
 }  // namespace crumple::stages
