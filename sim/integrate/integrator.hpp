@@ -94,6 +94,14 @@ class Integrator {
   void reset_history(const State& s);
   void push_history(const State& s);
   void implicit_attempt(const State& s, double h, Attempt& a);
+  // The parts of implicit_attempt (implicit_step.cpp).
+  /// Predictor of the step into `it`; returns the factor turning corrector - predictor into
+  /// the local error. `tc`: the step's time points (t + h, then the history's).
+  double implicit_predict(const State& s, double h, int ord, std::vector<double> tc, State& it);
+  /// Newton from the predictor in a.next; false with a.failure set when it fails.
+  bool implicit_newton(double bh, const VecX& hx, const VecX& hp, Attempt& a);
+  /// max(|F_i| / m, |v_i(t+h) - v_i(t)| / h) / a_ref at the converged step.
+  double realised_acceleration_ratio(const State& s, const State& it, double h) const;
   void explicit_attempt(const State& s, double h, Attempt& a);
   void explicit_rhs(double t, const VecX& y, VecX& dy, State& scratch);
   double plastic_rate_at(const VecX& x, const VecX& p, VecX& g) const;
