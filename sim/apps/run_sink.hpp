@@ -34,11 +34,11 @@ class FileSink : public RunSink {
   /// The stage's wall time is the wall clock since the previous stage end (or, for the first
   /// stage of this process, since the sink was made: a resumed run counts from the resume), less
   /// the sink's own writing in between, so that stage walls and output_s add up to the run's.
-  void stage_end(int cycle, int index, const std::string& type, const State& s) override {
+  void stage_end(int cycle, int index, const Stage& stage, const State& s) override {
     const double wall = since(last_stage_end_) - (output_s_ - output_at_stage_end_);
     last_stage_end_ = Clock::now();
     output_at_stage_end_ = output_s_;
-    rec_.stage_ends.push_back({cycle, index, type, s.t, s.p, wall});
+    rec_.stage_ends.push_back({cycle, index, stage.type(), s.t, s.p, wall, stage.compaction()});
   }
   void cycle_end(int cycle, const State& s) override {
     CycleRecord c;
@@ -47,6 +47,9 @@ class FileSink : public RunSink {
     c.x = s.x;
     c.p = s.p;
     c.crease_threshold = threshold_;
+    // From the stage ends the record holds, which a resumed run read back from its checkpoint
+    // file: the stages of this cycle that ran before the resume count too.
+    c.compaction = cycle_compaction(rec_.stage_ends, cycle);
     c.crease_mask.resize(s.p.size());
     for (Index h = 0; h < s.p.size(); ++h) c.crease_mask[h] = std::abs(s.p[h]) > threshold_;
     rec_.cycles.push_back(std::move(c));
