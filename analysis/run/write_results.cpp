@@ -37,6 +37,7 @@ nlohmann::json fit_json(const std::optional<LogLawFit>& f, const std::optional<d
                       {"reduced_chi2", num(f->chi2_red)},
                       {"r2", num(f->r2)},
                       {"converged", f->converged},
+                      {"at_bound", f->at_bound},
                       {"iterations", f->iterations}};
   if (D) {
     const auto k = to_experiment_constants(*f, *D);
