@@ -1,4 +1,5 @@
-# make reproduce: deps -> build -> runs -> analysis -> ensemble statistics -> results/REPORT.md.
+# make reproduce: deps -> build -> runs -> analysis -> ensemble statistics and fits -> figures ->
+# results/REPORT.md.
 #
 # Every run is a file target (runs/PRESET/seedS.h5), so `make -j` runs seeds in parallel, a
 # finished run is never redone, and a killed run (its RUN.h5.tmp holds a checkpoint) resumes.
@@ -42,13 +43,16 @@ $(RUNDIR)/seed%.h5: $(PROTOCOL) $(PRESET_FILE)
 $(RUNDIR)/seed%.analysis/stats.json: $(RUNDIR)/seed%.h5
 	$(ANALYZE) $< -o $(RUNDIR)/seed$*.analysis
 
-# The report: ensemble statistics and fits, the four figures (crease length against the law,
-# where the creases were made, facet areas, crease maps of the first seed), then REPORT.md.
+# The report: ensemble statistics and fits (crumple-analyze ensemble, their one implementation),
+# tabulated (ensemble.csv), the four figures (crease length against the law, where the creases
+# were made, facet areas, crease maps of the first seed), then REPORT.md.
 # `pipeline/report/check_report.py $(RESULTS)/REPORT.md` checks that it is complete.
 SHOWN := $(dir $(firstword $(STATS)))
-$(RESULTS)/REPORT.md: $(STATS) $(wildcard pipeline/plots/*.py pipeline/report/*.py)
+ANALYSES := $(foreach s,$(SEEDS_USED),$(RUNDIR)/seed$(s).analysis)
+$(RESULTS)/REPORT.md: $(STATS) $(ANALYZE) $(wildcard pipeline/plots/*.py pipeline/report/*.py)
 	@mkdir -p $(RESULTS)
-	$(PYTHON) pipeline/plots/ensemble.py -o $(RESULTS)/ensemble.json $(STATS)
+	$(ANALYZE) ensemble -o $(RESULTS)/ensemble.json $(ANALYSES)
+	$(PYTHON) pipeline/plots/ensemble.py $(RESULTS)/ensemble.json -o $(RESULTS)/ensemble.csv
 	$(PYTHON) pipeline/plots/plot_crease_length.py $(RESULTS)/ensemble.json -o $(RESULTS)/crease_length.png
 	$(PYTHON) pipeline/plots/plot_stages.py $(RESULTS)/ensemble.json -o $(RESULTS)/stages.png
 	$(PYTHON) pipeline/plots/plot_facets.py $(RESULTS)/ensemble.json -o $(RESULTS)/facets.png

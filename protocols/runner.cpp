@@ -198,7 +198,7 @@ bool ProtocolRunner::run(State& s, RunSink& sink, const Checkpoint* resume) {
       stage_wall_[stage->type()] +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - stage_wall_start_).count();
       stepper_.restart();
-      sink.stage_end(c, k, stage->type(), s);
+      sink.stage_end(c, k, *stage, s);
       if (k + 1 == num_stages_) {
         sink.cycle_end(c, s);
         ctx.cycle = c + 1;

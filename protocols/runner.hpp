@@ -51,8 +51,9 @@ class RunSink {
  public:
   virtual ~RunSink() = default;
   virtual void frame(const State& s, const std::string& stage, int cycle) = 0;
-  /// End of stage `index` (0-based) of cycle `cycle`, after the stage removed its terms.
-  virtual void stage_end(int /*cycle*/, int /*index*/, const std::string& /*type*/,
+  /// End of stage `index` (0-based) of cycle `cycle`, after the stage removed its terms; the
+  /// stage says what it was (type()) and what it imposed (compaction()).
+  virtual void stage_end(int /*cycle*/, int /*index*/, const Stage& /*stage*/,
                          const State& /*s*/) {}
   /// End of cycle `cycle` (after its last stage): the plastic field and geometry to keep.
   virtual void cycle_end(int cycle, const State& s) = 0;

@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -72,6 +73,12 @@ class Stage {
   virtual std::string progress(const StageContext& ctx) const { return ""; }
   /// Fraction of the stage done, in [0, 1], or a negative number when unknown (for the ETA).
   virtual double fraction(const StageContext& ctx) const { return -1.0; }
+  /// The compaction ratio (final / initial gap, the experiment's knob, docs/STATISTICS.md §1)
+  /// that this stage imposes, from its resolved parameters, for stages that compact the sheet;
+  /// nullopt for the others. Valid from begin() on (a protocol whose compaction changes from
+  /// cycle to cycle may resolve it there). The run file records it per stage end and per cycle,
+  /// so the analysis never has to find it in the stored configuration.
+  virtual std::optional<double> compaction() const { return std::nullopt; }
   /// Cap on the stage's simulated duration (the stage ends there even if its target is not
   /// reached; the runner warns).
   double max_duration = 1e30;

@@ -1,10 +1,12 @@
-// crumple-analyze: crease length, crease maps, facets and fits of one run file
-// (analysis/README.md).
+// crumple-analyze: crease length, crease maps, facets and fits of one run file, and the
+// ensemble statistics and fits over several analysed runs (analysis/README.md).
 //
 //   crumple-analyze RUN.h5 [-o DIR] [--threshold-c0 F | --threshold P] [--px-per-cm R] ...
+//   crumple-analyze ensemble -o ENSEMBLE.json DIR... (DIR: a run's output folder or its stats.json)
 //
-// Exit codes: 0 success, 2 bad input (arguments, run file or output folder; nothing is
-// written), 1 anything else (an earlier output folder is then left as it was).
+// Exit codes: 0 success, 2 bad input (arguments, run file, stats.json or output folder; nothing
+// is written), 1 anything else (an earlier output is then left as it was).
+#include "analysis/ensemble/ensemble.hpp"
 #include "analysis/io/run_reader.hpp"
 #include "analysis/run/analyze_run.hpp"
 #include "analysis/run/write_results.hpp"
@@ -14,15 +16,60 @@
 #include <filesystem>
 #include <iostream>
 
+namespace {
+
+/// `crumple-analyze ensemble`: reads every stats.json, writes ensemble.json, prints the fits.
+int run_ensemble(const std::vector<std::string>& inputs, const std::string& out_path) {
+  using namespace crumple::analysis;
+  std::vector<RunStats> runs;
+  for (const auto& p : inputs) runs.push_back(read_run_stats(p));
+  const EnsembleJson doc = ensemble_json(runs);
+  write_ensemble(out_path, doc);
+  std::cout << "crumple-analyze ensemble: " << runs.size() << " runs, " << doc["cycles"].size()
+            << " cycles -> " << out_path << "\n";
+  for (const auto& note : doc["notes"]) std::cout << "  note: " << note.get<std::string>() << "\n";
+  for (const char* q : {"perimeter_P", "crease_length_L0"}) {
+    const auto& f = doc["fits"][q]["increments"];
+    if (f.contains("error")) {
+      std::cout << "  log law on the increments of " << q << ": " << f["error"].get<std::string>()
+                << "\n";
+      continue;
+    }
+    std::cout << "  log law on the increments of " << q << ": C = " << f["C"] << " +- "
+              << f["sigma_C"] << ", n0 = " << f["n0"] << " +- " << f["sigma_n0"]
+              << ", chi2/dof = " << f["chi2"] << "/" << f["dof"] << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace crumple::analysis;
   AnalyzeOptions opt;
   std::string run_path, out_dir;
   CLI::App app{"crumple-analyze: crease length, crease maps, facet segmentation and fits of a "
-               "crumple run file (writes stats.json, CSVs and PNGs)"};
+               "crumple run file (writes stats.json, CSVs and PNGs); `crumple-analyze ensemble "
+               "--help` for the statistics over several runs"};
   app.footer("Exit codes: 0 done; 2 bad input (arguments, run file or output folder: nothing is "
              "written); 1 any other error (an earlier output folder is left as it was).");
-  app.add_option("run", run_path, "run file (RUN.h5) written by crumple-sim")->required();
+  // Not required by CLI11: the ensemble subcommand has no run file (checked after parsing).
+  app.add_option("run", run_path, "run file (RUN.h5) written by crumple-sim");
+  std::vector<std::string> ens_inputs;
+  std::string ens_out;
+  CLI::App* ens = app.add_subcommand(
+      "ensemble",
+      "ensemble statistics over several runs of one protocol: per cycle the mean, seed-to-seed "
+      "s.d. and s.e.m. of every per-cycle quantity, the per-stage and threshold-sensitivity "
+      "tables, and the log-law fits to the ensemble means weighted by their s.e.m. "
+      "(docs/STATISTICS.md §2.3); written as JSON");
+  ens->add_option("analyses", ens_inputs,
+                  "the runs' crumple-analyze output folders (or their stats.json files)")
+      ->required();
+  ens->add_option("-o,--output", ens_out, "ensemble JSON file to write (e.g. results/ensemble.json)")
+      ->required();
+  ens->footer("Exit codes: 0 done; 2 bad input (a missing or unreadable stats.json: nothing is "
+              "written); 1 any other error.");
   app.add_option("-o,--output", out_dir,
                  "output folder (default: the run file's name with .h5 replaced by .analysis)");
   double absolute = 0.0;
@@ -61,6 +108,28 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
+  }
+  if (ens->parsed()) {
+    // The per-run options mean nothing for the ensemble: refuse them rather than ignore them.
+    for (const CLI::Option* o : app.get_options())
+      if (o->count() > 0) {
+        std::cerr << "crumple-analyze ensemble: " << o->get_name()
+                  << " is an option of the per-run analysis, not of the ensemble\n";
+        return 2;
+      }
+    try {
+      return run_ensemble(ens_inputs, ens_out);
+    } catch (const InputError& e) {
+      std::cerr << "crumple-analyze ensemble: bad input: " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "crumple-analyze ensemble: error: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  if (run_path.empty()) {
+    std::cerr << app.help() << "crumple-analyze: the run file (RUN.h5) is required\n";
+    return 2;
   }
   try {
     if (app.count("--threshold")) opt.threshold = absolute;

@@ -1,14 +1,19 @@
-// Levenberg-Marquardt fit of l = C ln(1 + n/n0) and of its increments; see log_law.hpp.
+// Least-squares fit of l = C ln(1 + n/n0) and of its increments; see log_law.hpp.
 //
 // Both fits share one problem: y_i = C [ln(1 + n_i/n0) - ln(1 + m_i/n0)], with m_i = 0 for the
-// cumulative law and m_i = the previous cycle for the increments. The iteration runs on
-// (C, u = ln n0) so n0 stays positive without constraints; the reported covariance is computed
-// afterwards from the Jacobian in (C, n0), which at the optimum is the same first-order result
-// as transforming the (C, u) covariance.
+// cumulative law and m_i = the previous cycle for the increments. The model is linear in C, so C
+// is eliminated exactly (variable projection): for each n0 the best C >= 0 is a weighted linear
+// least-squares solution, and chi^2 is minimised over u = ln n0 alone, first by a scan of u over
+// [ln kN0Min, ln kN0Max], then by Brent's method between the neighbours of the best scan point.
+// A two-parameter Levenberg-Marquardt on (C, u), which this replaced, crawls along the curved
+// valley C/n0 = const of data that barely bend and stopped there at arbitrary n0 (5e4 where the
+// optimum is n0 -> oo); the one-dimensional search reaches the bound. The reported covariance
+// is computed afterwards from the Jacobian in (C, n0) at the optimum.
 #include "analysis/fits/log_law.hpp"
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -30,12 +35,64 @@ struct Problem {
     return J;
   }
 
-  /// Best C for fixed n0: the model is linear in C.
+  /// Best C >= 0 for fixed n0: the model is linear in C.
   double best_C(double n0) const {
     const Eigen::ArrayXd g = basis(n0) * w;
-    return (g * l * w).sum() / g.square().sum();
+    return std::max((g * l * w).sum() / g.square().sum(), 0.0);
   }
+  /// chi^2 with C eliminated: the profile over u = ln n0.
+  double profile(double u) const { return rss(best_C(std::exp(u)), std::exp(u)); }
 };
+
+/// Brent's minimisation of f on [a, b] (golden sections and parabolic steps; R. P. Brent,
+/// Algorithms for Minimization without Derivatives, 1973, ch. 5) from the interior point x with
+/// f(x) <= f(a), f(b); returns the minimiser, counts the iterations, and sets `converged` when
+/// the bracket shrank to the tolerance before the iteration limit.
+template <class F>
+double brent_minimize(F f, double a, double b, double x, int& iterations, bool& converged) {
+  constexpr double golden = 0.3819660112501051, eps = 1.4901161193847656e-08;  // sqrt(DBL_EPSILON)
+  double w = x, v = x, fx = f(x), fw = fx, fv = fx, d = 0, e = 0;
+  converged = false;
+  for (iterations = 0; iterations < 200; ++iterations) {
+    const double m = 0.5 * (a + b), tol = eps * std::abs(x) + 1e-12, t2 = 2 * tol;
+    if (std::abs(x - m) <= t2 - 0.5 * (b - a)) {
+      converged = true;
+      break;
+    }
+    double p = 0, q = 0, r = 0;
+    if (std::abs(e) > tol) {  // try a parabola through x, w, v
+      r = (x - w) * (fx - fv);
+      q = (x - v) * (fx - fw);
+      p = (x - v) * q - (x - w) * r;
+      q = 2 * (q - r);
+      if (q > 0) p = -p;
+      q = std::abs(q);
+      r = e, e = d;
+    }
+    if (std::abs(p) < std::abs(0.5 * q * r) && p > q * (a - x) && p < q * (b - x)) {
+      d = p / q;
+      const double u = x + d;
+      if (u - a < t2 || b - u < t2) d = x < m ? tol : -tol;
+    } else {
+      e = (x < m ? b : a) - x;
+      d = golden * e;
+    }
+    const double u = x + (std::abs(d) >= tol ? d : (d > 0 ? tol : -tol));
+    const double fu = f(u);
+    if (fu <= fx) {
+      (u < x ? b : a) = x;
+      v = w, fv = fw, w = x, fw = fx, x = u, fx = fu;
+    } else {
+      (u < x ? a : b) = u;
+      if (fu <= fw || w == x) {
+        v = w, fv = fw, w = u, fw = fu;
+      } else if (fu <= fv || v == x || v == w) {
+        v = u, fv = fu;
+      }
+    }
+  }
+  return x;
+}
 
 LogLawFit solve(Problem& P, const std::vector<double>& sigma) {
   const Eigen::Index N = P.n.size();
@@ -44,45 +101,39 @@ LogLawFit solve(Problem& P, const std::vector<double>& sigma) {
     if (!(P.w.isFinite().all() && (P.w > 0).all()))
       throw std::invalid_argument("fit_log_law: sigmas must be positive");
   }
-  // Start from the best point of a log-spaced scan of n0 (C eliminated exactly), so LM begins
-  // in the right basin even when the data barely bend.
-  double u = 0.0, best = INFINITY;
-  for (int i = 0; i <= 140; ++i) {
-    const double ui = std::log(1e-3) + i * (std::log(1e4) - std::log(1e-3)) / 140.0;
-    const double r = P.rss(P.best_C(std::exp(ui)), std::exp(ui));
-    if (r < best) best = r, u = ui;
+  // Scan u = ln n0 over the whole range, 20 points a decade, so the search starts in the right
+  // basin even when the data barely bend; then refine between the best point's neighbours.
+  const double u_min = std::log(kN0Min), u_max = std::log(kN0Max);
+  const int K = static_cast<int>(std::lround(20 * std::log10(kN0Max / kN0Min)));
+  const auto u_at = [&](int i) { return u_min + i * (u_max - u_min) / K; };
+  int best = 0;
+  double best_r = INFINITY;
+  for (int i = 0; i <= K; ++i) {
+    const double r = P.profile(u_at(i));
+    if (r < best_r) best_r = r, best = i;
   }
-  double C = P.best_C(std::exp(u)), lambda = 1e-3, cur = P.rss(C, std::exp(u));
   LogLawFit fit;
-  for (fit.iterations = 0; fit.iterations < 500; ++fit.iterations) {
-    const double n0 = std::exp(u);
-    Eigen::MatrixX2d J = P.jacobian(C, n0);
-    J.col(1) *= n0;  // d/du = n0 d/dn0
-    const Eigen::VectorXd r = ((P.model(C, n0) - P.l) * P.w).matrix();
-    const Eigen::Matrix2d A = J.transpose() * J;
-    const Eigen::Vector2d g = J.transpose() * r;
-    bool accepted = false;
-    while (lambda < 1e12) {
-      Eigen::Matrix2d M = A;
-      M.diagonal() += lambda * A.diagonal();
-      const Eigen::Vector2d step = M.ldlt().solve(-g);
-      const double trial = P.rss(C + step(0), std::exp(u + step(1)));
-      if (std::isfinite(trial) && trial <= cur) {
-        const double drop = cur - trial;
-        C += step(0), u += step(1), cur = trial;
-        lambda = std::max(lambda / 10.0, 1e-12);
-        accepted = true;
-        if (drop <= 1e-14 * (cur + 1e-300) || step.norm() < 1e-12) fit.converged = true;
-        break;
-      }
-      lambda *= 10.0;
-    }
-    if (!accepted) fit.converged = true;  // no downhill step left: at a minimum
-    if (fit.converged) break;
+  const auto f = [&](double x) { return P.profile(x); };
+  double u = u_at(best);
+  if (best == 0 || best == K) {
+    // The best scan point is a bound: the minimum is there unless it lies inside the last
+    // interval, which Brent's method finds from that interval's midpoint.
+    const double a = u_at(best == 0 ? 0 : K - 1), b = u_at(best == 0 ? 1 : K);
+    const double mid = 0.5 * (a + b);
+    if (f(mid) < best_r)
+      u = brent_minimize(f, a, b, mid, fit.iterations, fit.converged);
+    else
+      fit.converged = true;
+  } else {
+    u = brent_minimize(f, u_at(best - 1), u_at(best + 1), u, fit.iterations, fit.converged);
   }
-
+  // Brent's method never evaluates the ends of its bracket: a minimum on a bound is taken there.
+  for (const double edge : {u_min, u_max})
+    if (std::abs(u - edge) < 1e-6 && f(edge) <= f(u)) u = edge;
+  const double C = P.best_C(std::exp(u)), cur = P.profile(u);
   fit.C = C;
   fit.n0 = std::exp(u);
+  fit.at_bound = C <= 0.0 || u == u_min || u == u_max;
   fit.rss = cur;
   fit.dof = static_cast<int>(N) - 2;
   fit.chi2_red = fit.dof > 0 ? cur / fit.dof : 0.0;

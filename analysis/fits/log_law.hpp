@@ -1,7 +1,9 @@
 // Fit of the logarithmic crease-length law l(n) = C ln(1 + n / n0) (docs/STATISTICS.md §2.2-2.3)
-// by nonlinear least squares (a two-parameter Levenberg-Marquardt written out with Eigen), with
-// the parameter covariance s^2 (J^T J)^-1 at the optimum, and conversion to the experiment's
-// constants c1 = C / (1 - D), c2 = D / n0 when the compaction ratio D is known.
+// by nonlinear least squares (C eliminated exactly, n0 found by a scan and Brent's method; see
+// log_law.cpp), with the parameter covariance at the optimum, and conversion to the experiment's
+// constants c1 = C / (1 - D), c2 = D / n0 when the compaction ratio D is known. This is the one
+// implementation of the law's fit: crumple-analyze fits each run with it, and
+// `crumple-analyze ensemble` the means over runs (analysis/ensemble/).
 //
 // Two fits of the same law. The cumulative fit takes l_n itself; but l_n is the sum of all
 // earlier cycles' increments, so its deviations from the law are correlated from cycle to cycle
@@ -11,6 +13,13 @@
 // cycles are made by different crumples, so the increments are nearly independent (a per-cycle
 // measurement error, such as the rasterisation of P, still anti-correlates neighbours a little)
 // and its covariance is the honest one (docs/STATISTICS.md §2.3, step 4).
+//
+// The search is confined to C >= 0 and kN0Min <= n0 <= kN0Max. Data that do not bend (n0 -> oo:
+// a straight line of slope C/n0) or that put all the length into the first cycle (n0 -> 0) have
+// their least-squares optimum at no finite n0; the fit then stops on the bound, says so
+// (at_bound), and keeps the covariance of the full Jacobian there, whose huge sigma_n0 shows that
+// the data do not fix n0. (The range is the one the ensemble fits of pipeline/plots/ensemble.py
+// had in scipy's curve_fit before they moved here, issue 34.)
 #pragma once
 
 #include <optional>
@@ -18,6 +27,10 @@
 #include <vector>
 
 namespace crumple::analysis {
+
+/// The range of n0 (cycles) the fit searches; far outside the cycles fitted, n0 is not
+/// determined by them.
+inline constexpr double kN0Min = 1e-6, kN0Max = 1e6;
 
 struct LogLawFit {
   double C = 0.0, n0 = 0.0;            ///< fitted parameters (C in the units of l, n0 in cycles)
@@ -28,8 +41,9 @@ struct LogLawFit {
   double chi2_red = 0.0;                ///< rss / dof
   double r2 = 0.0;                      ///< coefficient of determination
   bool weighted = false;                ///< true when per-point sigmas were given
-  int iterations = 0;
+  int iterations = 0;                   ///< of the one-dimensional search for n0
   bool converged = false;
+  bool at_bound = false;                ///< stopped on C = 0, n0 = kN0Min or n0 = kN0Max
   std::string model;                    ///< which form was fitted, in words
 };
 

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ struct MeshData {
 struct CycleData {
   int cycle = 0;          ///< cycle number, from 1
   std::vector<double> p;  ///< h plastic rest curvatures (2 sin(theta/2) units)
+  /// /cycles/NNNN@compaction: the compaction ratio the cycle's compacting stage imposed;
+  /// nullopt when the attribute is NaN (no stage of the cycle compacts the sheet) or absent.
+  std::optional<double> compaction;
+  bool compaction_recorded = false;  ///< the attribute exists (files before it lack it)
 };
 
 /// The plastic field at the end of one finished protocol stage (/stage_ends/NNNNNN).

@@ -8,6 +8,7 @@
 #include <H5Cpp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 namespace crumple::analysis {
@@ -77,7 +78,7 @@ RunData read_run(const std::string& path) {
       if (ds.getTypeClass() == H5T_STRING) ds.read(run.config_yaml, ds.getStrType());
       run.config_yaml = run.config_yaml.c_str();
     } else {
-      run.warnings.push_back("no /config dataset; compaction and yield curvature c0 unknown");
+      run.warnings.push_back("no /config dataset; yield curvature c0 unknown");
     }
 
     if (!file.nameExists("mesh")) r.fail("missing group /mesh");
@@ -120,6 +121,16 @@ RunData read_run(const std::string& path) {
       r.require_finite(c.p, where + "/p");
       r.rows(g, where, "x", 3) == n ? void() : r.fail(where + "/x must have " +
                                                       std::to_string(n) + " rows");
+      // The compaction ratio is final / initial gap: NaN (no compacting stage) or in (0, 1].
+      if (g.attrExists("compaction")) {
+        c.compaction_recorded = true;
+        const double d = r.number_attribute<double>(g, where, "compaction", D);
+        if (!std::isnan(d)) {
+          if (!(d > 0 && d <= 1))
+            r.fail(where + "@compaction = " + h5::format_number(d) + " is outside (0, 1]");
+          c.compaction = d;
+        }
+      }
       run.cycles.push_back(std::move(c));
     }
     if (run.cycles.empty()) r.fail("/cycles holds no cycle groups (no completed cycles)");

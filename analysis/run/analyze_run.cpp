@@ -6,6 +6,7 @@
 #include "analysis/io/run_reader.hpp"
 #include "analysis/raster/crease_map.hpp"
 #include "analysis/raster/raster_frame.hpp"
+#include "analysis/run/compaction.hpp"
 #include "analysis/run/config_params.hpp"
 
 #include <algorithm>
@@ -153,7 +154,9 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt) {
   const double unit = run.length_unit_m;
   out.L0_m = sheet_size(mesh) * unit;
   out.area_m2 = sheet_area(mesh) * unit * unit;
-  out.compaction = compaction_from_config(run.config_yaml);
+  const RunCompaction compaction = run_compaction(run.cycles);
+  out.compaction = compaction.value;
+  out.compaction_note = compaction.note;
   out.warnings = run.warnings;
   out.threshold_rule = resolve_threshold(run, opt, out.warnings);
   const double threshold = out.threshold_rule.threshold;
@@ -185,6 +188,7 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt) {
   for (const CycleData& c : run.cycles) {
     CycleResult r;
     r.cycle = c.cycle;
+    r.compaction = c.compaction;
     CreaseMeasure m = measure_creases(ctx, c.p, threshold);
     const auto fresh = new_creases(m.creased, previous);
     r.crease_edges = m.crease_edges;

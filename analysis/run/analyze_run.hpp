@@ -53,6 +53,7 @@ struct ShapeStats {
 
 struct CycleResult {
   int cycle = 0;
+  std::optional<double> compaction;  ///< as the run file recorded it for the cycle (CycleData)
   long crease_edges = 0, new_crease_edges = 0;
   double crease_length_m = 0, crease_length_L0 = 0;
   double new_crease_length_m = 0, new_crease_length_L0 = 0;
@@ -81,7 +82,10 @@ struct RunAnalysis {
   double mean_triangle_area_m2 = 0;  ///< the mesh floor: creases cannot enclose less
   double pixel_floor_m2 = 0;         ///< min_facet_px pixels
   double smallest_resolvable_m2 = 0; ///< the larger of the two floors
+  /// The compaction ratio D every cycle recorded, for c1, c2 (run/compaction.hpp); unset, with
+  /// compaction_note saying why, when the cycles do not all give one and the same value.
   std::optional<double> compaction;
+  std::string compaction_note;
   std::vector<CycleResult> cycles;
   ThresholdRule threshold_rule;  ///< the threshold used and how it was derived
   ThresholdSensitivity sensitivity;

@@ -5,21 +5,6 @@
 
 namespace crumple::analysis {
 
-std::optional<double> compaction_from_config(const std::string& yaml_text) {
-  if (yaml_text.empty()) return std::nullopt;
-  try {
-    const YAML::Node root = YAML::Load(yaml_text);
-    const YAML::Node stages = root["protocol"]["stages"];
-    if (!stages || !stages.IsSequence()) return std::nullopt;
-    for (const auto& s : stages)
-      if (s["type"] && s["type"].as<std::string>() == "compress" && s["compaction"])
-        return s["compaction"].as<double>();
-  } catch (const YAML::Exception&) {
-    // A config the analysis cannot read only costs the c1/c2 conversion, not the analysis.
-  }
-  return std::nullopt;
-}
-
 std::optional<double> plastic_c0_from_config(const std::string& yaml_text) {
   if (yaml_text.empty()) return std::nullopt;
   try {

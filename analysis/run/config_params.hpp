@@ -1,6 +1,6 @@
-// Values the analysis takes from the run's resolved YAML config (/config): the compaction ratio
-// of the compress stage, needed to convert the log-law fit to the experiment's c1, c2
-// (docs/STATISTICS.md §2.3), and the yield curvature c0 that sets the crease threshold.
+// Values the analysis takes from the run's resolved YAML config (/config): the yield curvature
+// c0 that sets the crease threshold. (The compaction ratio is not looked for here: the run file
+// records it per cycle, run/compaction.hpp.)
 #pragma once
 
 #include <optional>
@@ -11,10 +11,6 @@ namespace crumple::analysis {
 /// The simulator's default yield curvature (integrator.plastic_c0 in docs/CONFIG.md), used when
 /// the config does not give one.
 inline constexpr double kDefaultPlasticC0 = 0.1;
-
-/// `compaction` of the first stage with `type: compress` under protocol.stages; nullopt when the
-/// text is empty, not YAML, or has no such stage.
-std::optional<double> compaction_from_config(const std::string& yaml_text);
 
 /// integrator.plastic_c0; nullopt when the text is empty, not YAML, or has no such key (the
 /// caller then uses kDefaultPlasticC0, as the simulator did).

@@ -37,6 +37,7 @@ nlohmann::json fit_json(const std::optional<LogLawFit>& f, const std::optional<d
                       {"reduced_chi2", num(f->chi2_red)},
                       {"r2", num(f->r2)},
                       {"converged", f->converged},
+                      {"at_bound", f->at_bound},
                       {"iterations", f->iterations}};
   if (D) {
     const auto k = to_experiment_constants(*f, *D);
@@ -78,7 +79,9 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
   j["input"] = {{"path", run.path},
                 {"meta", run.meta},
                 {"length_unit_m", run.length_unit_m},
-                {"compaction", res.compaction ? nlohmann::json(*res.compaction) : nlohmann::json()},
+                {"compaction", json_or_null(res.compaction)},
+                {"compaction_note",
+                 res.compaction_note.empty() ? nlohmann::json() : nlohmann::json(res.compaction_note)},
                 {"n_cycles", run.cycles.size()}};
   j["warnings"] = res.warnings;
   j["parameters"] = {
@@ -108,6 +111,7 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
   j["cycles"] = nlohmann::json::array();
   for (const auto& c : res.cycles) {
     nlohmann::json cj = {{"cycle", c.cycle},
+                         {"compaction", json_or_null(c.compaction)},
                          {"crease_edges", c.crease_edges},
                          {"new_crease_edges", c.new_crease_edges},
                          {"crease_length_m", c.crease_length_m},
@@ -151,7 +155,10 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
       {"perimeter_P", fit_json(res.fit_P, res.compaction)},
       {"crease_length_L0_increments", fit_json(res.fit_length_increments, res.compaction)},
       {"perimeter_P_increments", fit_json(res.fit_P_increments, res.compaction)},
-      {"note", res.fit_note}};
+      {"note", res.fit_note},
+      // Why c1, c2 are missing from the fits, when they are (run/compaction.hpp).
+      {"compaction_note",
+       res.compaction_note.empty() ? nlohmann::json() : nlohmann::json(res.compaction_note)}};
   return j;
 }
 
@@ -173,7 +180,7 @@ void write_files(const std::filesystem::path& dir, const RunData& run, const Run
   cyc << "cycle,crease_edges,crease_length_m,crease_length_L0,new_crease_length_m,perimeter_P,"
          "n_facets,mean_area_m2,mean_area_x,a_fit,a_fit_lo,a_fit_hi,a_moment,a_univ,ks_distance,"
          "ks_pvalue,new_crease_length_L0,dangling_fraction,n_single_triangle_facets,"
-         "single_triangle_fraction,new_length_share_after_compress\n";
+         "single_triangle_fraction,new_length_share_after_compress,compaction\n";
   auto fac = open_out(dir / "facets.csv");
   fac << "cycle,facet_id,area_m2,x,xi,touches_border\n";
   auto dis = open_out(dir / "distribution.csv");
@@ -190,7 +197,7 @@ void write_files(const std::filesystem::path& dir, const RunData& run, const Run
       cyc << ",,,,,,,";
     cyc << ',' << c.new_crease_length_L0 << ',' << Cell{c.dangling_fraction} << ','
         << c.n_single_triangle_facets << ',' << Cell{c.single_triangle_fraction} << ','
-        << Cell{c.new_length_share_after_compress} << '\n';
+        << Cell{c.new_length_share_after_compress} << ',' << Cell{c.compaction} << '\n';
     for (const auto& f : c.facets)
       fac << c.cycle << ',' << f.id << ',' << f.area_m2 << ',' << f.x << ',' << f.xi << ','
           << (f.touches_border ? 1 : 0) << '\n';

@@ -1,6 +1,7 @@
 """Helpers shared by the pipeline's plot and report scripts: input checks that fail with a clear
-message, the experimental constants from data/, and the fragmentation-model density
-phi(xi; a) of docs/STATISTICS.md §3.3."""
+message, the ensemble file of `crumple-analyze ensemble`, the experimental constants from data/
+and the law they give, and the fragmentation-model density phi(xi; a) of docs/STATISTICS.md
+§3.3."""
 import csv
 import json
 import math
@@ -25,15 +26,26 @@ def load_json(path, what):
         die(f"{what} {path} is not valid JSON: {e}")
 
 
+def load_ensemble(path):
+    """ensemble.json as `crumple-analyze ensemble` writes it (the ensemble statistics and fits;
+    analysis/README.md); dies naming the file when it is not one."""
+    e = load_json(path, "ensemble file")
+    missing = [k for k in ("cycles", "fits", "stages", "threshold_sensitivity", "runs") if k not in e]
+    if missing:
+        die(f"{path} is not an ensemble file of `crumple-analyze ensemble` (no {', '.join(missing)}); "
+            "make it with: crumple-analyze ensemble -o ENSEMBLE.json RUN.analysis ...")
+    return e
+
+
 def ensemble_cli(doc):
     """The plot scripts' command line, ENSEMBLE -o OUTPUT: returns the arguments and the loaded
     ensemble.json."""
     import argparse
     ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("ensemble", help="ensemble.json from ensemble.py")
+    ap.add_argument("ensemble", help="ensemble.json from crumple-analyze ensemble")
     ap.add_argument("-o", "--output", required=True)
     args = ap.parse_args()
-    return args, load_json(args.ensemble, "ensemble file")
+    return args, load_ensemble(args.ensemble)
 
 
 def read_csv(path):
@@ -51,10 +63,20 @@ def law_constants():
     return rows["c1"], rows["c2"]
 
 
-def experimental_law(n, compaction):
-    """l/L0 = c1 (1 - D) ln(1 + c2 n / D) (docs/STATISTICS.md §2.1)."""
+def experiment(D, cycles):
+    """The experimental law l/L0 = c1 (1 - D) ln(1 + c2 n/D) (docs/STATISTICS.md §2.1) at
+    compaction D: its C = c1 (1 - D), n0 = D/c2 and, for each cycle number n of `cycles`, its
+    value and its increment from n - 1. None when D is unknown or outside (0, 1). This evaluates
+    the reference law for the tables and the report; it fits nothing."""
+    if D is None or not 0 < D < 1:
+        return None
     c1, c2 = law_constants()
-    return [c1 * (1 - compaction) * math.log(1 + c2 * k / compaction) for k in n]
+    law = lambda n: c1 * (1 - D) * math.log1p(c2 * n / D)  # noqa: E731
+    return {"c1": c1, "c2": c2, "D": D, "C": c1 * (1 - D), "n0": D / c2,
+            "note": "law l/L0 = c1 (1 - D) ln(1 + c2 n/D) (docs/STATISTICS.md §2.1); "
+                    "no published uncertainty",
+            "cycles": [{"cycle": n, "law": law(n), "law_increment": law(n) - law(n - 1)}
+                       for n in cycles]}
 
 
 def phi(xi, a):

@@ -80,8 +80,6 @@ def main():
     args, e = ensemble_cli(__doc__)
     if not e.get("cycles"):
         die(f"{args.ensemble} has no cycles")
-    if "fits" not in e:
-        die(f"{args.ensemble} was written by an older ensemble.py; run pipeline/plots/ensemble.py again")
 
     n = np.array([c["cycle"] for c in e["cycles"]], float)
     nn = np.linspace(0, max(n.max(), 1) + 0.3, 300)

@@ -32,8 +32,6 @@ STAGE_COLOURS = {"roll": "0.6", "compress": "C0", "release": "C1", "unfold": "C3
 
 def main():
     args, e = ensemble_cli(__doc__)
-    if "stages" not in e:
-        die(f"{args.ensemble} was written by an older ensemble.py; run pipeline/plots/ensemble.py again")
     st = e["stages"]
     os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
     fig, (ax, ax2) = plt.subplots(1, 2, figsize=(12, 4.6), gridspec_kw={"width_ratios": [1.4, 1]})

@@ -121,6 +121,8 @@ class CompressStage : public Stage {
     return os.str();
   }
 
+  std::optional<double> compaction() const override { return compaction_; }
+
   double fraction(const StageContext& ctx) const override {
     if (retract_)
       return std::clamp((ctx.state->t - t0_) / (t_retract_ + retract_duration_ - t0_), 0.0, 1.0);

@@ -33,11 +33,11 @@ class FileSink : public RunSink {
   /// The stage's wall time is the wall clock since the previous stage end (or, for the first
   /// stage of this process, since the sink was made: a resumed run counts from the resume), less
   /// the sink's own writing in between, so that stage walls and output_s add up to the run's.
-  void stage_end(int cycle, int index, const std::string& type, const State& s) override {
+  void stage_end(int cycle, int index, const Stage& stage, const State& s) override {
     const double wall = since(last_stage_end_) - (output_s_ - output_at_stage_end_);
     last_stage_end_ = Clock::now();
     output_at_stage_end_ = output_s_;
-    rec_.stage_ends.push_back({cycle, index, type, s.t, s.p, wall});
+    rec_.stage_ends.push_back({cycle, index, stage.type(), s.t, s.p, wall, stage.compaction()});
   }
   void cycle_end(int cycle, const State& s) override {
     CycleRecord c;
@@ -45,6 +45,9 @@ class FileSink : public RunSink {
     c.t = s.t;
     c.x = s.x;
     c.p = s.p;
+    // From the stage ends the record holds, which a resumed run read back from its checkpoint
+    // file: the stages of this cycle that ran before the resume count too.
+    c.compaction = cycle_compaction(rec_.stage_ends, cycle);
     rec_.cycles.push_back(std::move(c));
   }
   /// A checkpoint's write is counted in the next write's output_s (a file cannot hold the time

@@ -284,6 +284,14 @@ void write_bytes(const std::string& path, const std::vector<char>& bytes) {
 }
 }  // namespace
 
+double cycle_compaction(const std::vector<StageEndRecord>& stage_ends, int cycle) {
+  double out = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& e : stage_ends)
+    if (e.cycle == cycle && e.compaction && (std::isnan(out) || *e.compaction < out))
+      out = *e.compaction;
+  return out;
+}
+
 void write_run_file(const std::string& path, const RunRecord& r) {
   H5::Exception::dontPrint();
   std::vector<char> image;
@@ -340,6 +348,7 @@ void write_all(H5::H5File& file, const RunRecord& r) {
     h5::write(g, "p", to_vec(c.p));
     h5::attr(g, "t", c.t);
     h5::attr(g, "cycle", std::int64_t{c.cycle});
+    h5::attr(g, "compaction", c.compaction);
   }
   H5::Group stage_ends = h5::group(root, "stage_ends");
   for (std::size_t k = 0; k < r.stage_ends.size(); ++k) {
@@ -351,6 +360,7 @@ void write_all(H5::H5File& file, const RunRecord& r) {
     h5::attr(g, "stage", e.stage);
     h5::attr(g, "stage_index", std::int64_t{e.stage_index});
     h5::attr(g, "wall", e.wall);
+    if (e.compaction) h5::attr(g, "compaction", *e.compaction);
   }
   H5::Group log = h5::group(root, "log");
   h5::write(log, "t", log_column(r.log, [](const LogRow& x) { return x.t; }));
@@ -435,6 +445,7 @@ RunRecord read_run_file(const std::string& path) {
       c.p = to_eigen(h5::read_doubles(g, "p"));
       c.t = h5::attr_double(g, "t");
       c.cycle = static_cast<int>(h5::attr_int(g, "cycle"));
+      if (g.attrExists("compaction")) c.compaction = h5::attr_double(g, "compaction");  // else NaN
       const std::string at = "/cycles/" + name;
       check.length(at + "/x", c.x, 3 * n, "3 per mesh node");
       check.length(at + "/p", c.p, m, "one per hinge");
@@ -451,6 +462,7 @@ RunRecord read_run_file(const std::string& path) {
         e.stage = h5::attr_string(g, "stage");
         e.stage_index = static_cast<int>(h5::attr_int(g, "stage_index"));
         if (g.attrExists("wall")) e.wall = h5::attr_double(g, "wall");  // else NaN (older file)
+        if (g.attrExists("compaction")) e.compaction = h5::attr_double(g, "compaction");
         check.length("/stage_ends/" + name + "/p", e.p, m, "one per hinge");
         r.stage_ends.push_back(std::move(e));
       }

@@ -31,6 +31,9 @@ struct CycleRecord {
   int cycle = 0;
   double t = 0;
   VecX x, p;  ///< which hinges count as creased is the analysis's call (analysis/README.md)
+  /// The compaction ratio the cycle's compacting stage imposed (cycle_compaction()); NaN when no
+  /// stage of the cycle compacts the sheet, and in files written before it was recorded.
+  double compaction = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The plastic field at the end of one stage of one cycle (per-stage crease accounting).
@@ -43,7 +46,16 @@ struct StageEndRecord {
   /// Wall seconds of the stage, less the run-file writing in it (FileSink::stage_end); NaN in
   /// files written before it was stored.
   double wall = std::numeric_limits<double>::quiet_NaN();
+  /// The compaction ratio the stage imposed (Stage::compaction()); absent for stages that do
+  /// not compact the sheet and in files written before it was recorded.
+  std::optional<double> compaction;
 };
+
+/// The compaction ratio of cycle `cycle` from its stage ends: the smallest (the strongest
+/// compaction) among the stages of the cycle that report one, or NaN when none does. A run's
+/// compress stages all measure the gap against the height of the same roll, so the smallest
+/// ratio is how far the sheet was compacted in the cycle.
+double cycle_compaction(const std::vector<StageEndRecord>& stage_ends, int cycle);
 
 /// What a run spent outside the integrator's own counters, for benchmarks (attributes of /log):
 /// contact handling, from ContactTerm::stats() of the pairwise contact term, and the writing of

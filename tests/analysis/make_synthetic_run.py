@@ -9,10 +9,12 @@ With --stage-ends it also writes /stage_ends (the plastic field at the end of ea
 stages roll, compress, release, unfold of every cycle): each new crease segment of a cycle is
 made in one of those stages (mostly in compress), so the last stage end of a cycle equals the
 cycle's field. --c0 writes integrator.plastic_c0 into /config (absent otherwise, as in files
-whose config does not give it). The cycle fields do not depend on either flag.
+whose config does not give it). Every /cycles/NNNN records the compaction D as crumple-sim does
+(@compaction), unless --no-compaction-record writes the layout of files from before it was
+recorded. The cycle fields do not depend on these flags.
 
 usage: make_synthetic_run.py OUT.h5 [--seed S] [--cycles N] [--k K] [--compaction D]
-                             [--c0 C0] [--stage-ends]
+                             [--c0 C0] [--stage-ends] [--no-compaction-record]
 """
 import argparse
 
@@ -57,6 +59,8 @@ def main():
     ap.add_argument("--compaction", type=float, default=0.27)
     ap.add_argument("--c0", type=float, default=None, help="integrator.plastic_c0 in /config")
     ap.add_argument("--stage-ends", action="store_true", help="write /stage_ends")
+    ap.add_argument("--no-compaction-record", action="store_true",
+                    help="no /cycles/NNNN@compaction (a file from before it was recorded)")
     a = ap.parse_args()
     rng = np.random.default_rng(a.seed)
     stage_rng = np.random.default_rng(a.seed + 1000)  # keeps the cycle fields flag-independent
@@ -109,8 +113,12 @@ def main():
                     g1["p"] = at_stage[j]
                     g1.attrs["t"], g1.attrs["cycle"] = t, np.int32(n)
                     g1.attrs["stage"], g1.attrs["stage_index"] = name, np.int32(j)
+                    if name == "compress" and not a.no_compaction_record:
+                        g1.attrs["compaction"] = a.compaction
             cyc = cg.create_group(f"{n:04d}")
             cyc["p"], cyc["x"] = p, pos
+            if not a.no_compaction_record:
+                cyc.attrs["compaction"] = a.compaction
     print(f"make_synthetic_run.py: wrote {a.out}")
 
 

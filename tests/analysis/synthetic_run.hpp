@@ -1,7 +1,7 @@
 // Synthetic inputs for the analysis tests: a regularly triangulated square mesh with its edges
 // and hinges (built here, independent of the simulator's mesh code), and a run file written with
-// the HDF5 C++ API in the layout of docs/FILE_FORMAT.md (with /stage_ends when asked),
-// optionally broken on purpose.
+// the HDF5 C++ API in the layout of docs/FILE_FORMAT.md (with /stage_ends and the cycles'
+// compaction ratios when asked), optionally broken on purpose.
 #pragma once
 
 #include "analysis/io/run_data.hpp"
@@ -96,6 +96,9 @@ struct WriteOptions {
   std::vector<StageEndData> stage_ends;  ///< written as /stage_ends when not empty
   bool stage_group_without_records = false;  ///< an empty /stage_ends group
   bool stage_end_without_cycle_attr = false; ///< malformed: the first record lacks @cycle
+  /// /cycles/NNNN@compaction of cycle 1, 2, ... (NaN: no compacting stage); none written when
+  /// empty, as in files from before it was recorded.
+  std::vector<double> cycle_compaction;
 };
 
 template <class T, std::size_t K>
@@ -144,6 +147,9 @@ inline void write_run(const std::string& path, const MeshData& m,
     if (o.wrong_p_shape) p.pop_back();
     write_vec(g1, "p", p, H5::PredType::NATIVE_DOUBLE);
     write_rows(g1, "x", m.ref_positions, H5::PredType::NATIVE_DOUBLE);
+    if (c < o.cycle_compaction.size())
+      g1.createAttribute("compaction", H5::PredType::NATIVE_DOUBLE, H5::DataSpace())
+          .write(H5::PredType::NATIVE_DOUBLE, &o.cycle_compaction[c]);
   }
   if (o.stage_ends.empty() && !o.stage_group_without_records) return;
   H5::Group sg = f.createGroup("stage_ends");

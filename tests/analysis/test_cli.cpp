@@ -57,7 +57,10 @@ TEST(CrumpleAnalyze, SyntheticRunEndToEnd) {
   cycles.push_back(p);
   cycles.push_back(p);  // a cycle that adds nothing
   const fs::path run = dir / "run.h5";
-  synth::write_run(run.string(), m, cycles);
+  synth::WriteOptions o;
+  const double D = 0.36;  // recorded for every cycle, as crumple-sim does
+  o.cycle_compaction.assign(cycles.size(), D);
+  synth::write_run(run.string(), m, cycles, o);
 
   ASSERT_EQ(run_analyze(run.string()), 0);
   const fs::path out = dir / "run.analysis";
@@ -79,8 +82,17 @@ TEST(CrumpleAnalyze, SyntheticRunEndToEnd) {
   }
   EXPECT_NEAR(j["sheet"]["L0_m"].get<double>(), 0.1, 1e-12);
   EXPECT_NEAR(j["sheet"]["area_m2"].get<double>(), 0.01, 1e-12);
-  EXPECT_NEAR(j["input"]["compaction"].get<double>(), 0.27, 1e-12);
-  EXPECT_TRUE(j["log_fit"]["crease_length_L0"].contains("c1"));
+  // The compaction comes from the cycles' records, not from the config (which says 0.27).
+  EXPECT_EQ(j["input"]["compaction"].get<double>(), D);
+  EXPECT_TRUE(j["input"]["compaction_note"].is_null());
+  for (const auto& ci : c) EXPECT_EQ(ci["compaction"].get<double>(), D);
+  const auto& fit = j["log_fit"]["crease_length_L0"];
+  ASSERT_TRUE(fit.contains("c1"));
+  EXPECT_NEAR(fit["c1"].get<double>(), fit["C"].get<double>() / (1 - D), 1e-12);
+  EXPECT_NEAR(fit["c2"].get<double>(), D / fit["n0"].get<double>(), 1e-12);
+  const auto csv = lines(out / "cycles.csv");
+  EXPECT_EQ(csv[0].substr(csv[0].rfind(',') + 1), "compaction");
+  EXPECT_EQ(std::stod(csv[1].substr(csv[1].rfind(',') + 1)), D);
   EXPECT_TRUE(c[2].contains("a_fit") && c[2].contains("ks_pvalue"));
   // An older file: no /stage_ends, so no per-stage data, said in a warning; no c0 in the
   // config, so the default c0 with a warning.
@@ -192,6 +204,14 @@ TEST(CrumpleAnalyze, StagesThresholdRuleAndSensitivity) {
   }
   EXPECT_NE(j["log_fit"]["perimeter_P_increments"]["model"].get<std::string>().find("increments"),
             std::string::npos);
+  // A file without /cycles/NNNN@compaction (before it was recorded) is analysed all the same,
+  // without c1, c2, and says why: the compress stage's compaction in its config is not used.
+  EXPECT_TRUE(j["input"]["compaction"].is_null());
+  EXPECT_NE(j["input"]["compaction_note"].get<std::string>().find("records no compaction"),
+            std::string::npos);
+  EXPECT_EQ(j["log_fit"]["compaction_note"], j["input"]["compaction_note"]);
+  EXPECT_FALSE(j["log_fit"]["perimeter_P_increments"].contains("c1"));
+  for (const auto& ci : c) EXPECT_TRUE(ci["compaction"].is_null());
 
   const auto stages_csv = lines(out / "stages.csv");
   ASSERT_EQ(stages_csv.size(), 1u + 16u);

@@ -2,6 +2,7 @@
 // written with the HDF5 C++ API.
 #include "analysis/creases/crease_edges.hpp"
 #include "analysis/io/run_reader.hpp"
+#include "analysis/run/compaction.hpp"
 #include "analysis/run/config_params.hpp"
 #include "tests/analysis/synthetic_run.hpp"
 #include "tests/support/scratch.hpp"
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <limits>
 #include <random>
 
 using namespace crumple::analysis;
@@ -49,8 +51,68 @@ TEST(RunReader, ReadsWhatWasWritten) {
   EXPECT_EQ(r.mesh.hinges, m.hinges);
   EXPECT_EQ(r.mesh.rest_lengths, m.rest_lengths);
   EXPECT_EQ(r.meta["program_version"], "test");
-  EXPECT_EQ(compaction_from_config(r.config_yaml), 0.27);
+  for (const auto& c : r.cycles) EXPECT_FALSE(c.compaction_recorded);  // none written
   std::filesystem::remove(path);
+}
+
+// /cycles/NNNN@compaction: read per cycle (NaN: recorded as "no compacting stage"); the run's D
+// for c1, c2 only when every cycle gives the same value, otherwise unset with the reason.
+TEST(RunReader, CompactionPerCycle) {
+  const MeshData m = synth::square_grid_mesh(4, 2.0);
+  const auto path = (std::filesystem::temp_directory_path() / "crumple_test_compaction.h5").string();
+  const std::vector<double> p(m.hinges.size(), 0.25);
+  auto read_with = [&](std::vector<double> d, std::size_t cycles = 3) {
+    synth::WriteOptions o;
+    o.cycle_compaction = std::move(d);
+    synth::write_run(path, m, std::vector<std::vector<double>>(cycles, p), o);
+    return read_run(path);
+  };
+  RunData r = read_with({0.3, 0.3, 0.3});
+  ASSERT_EQ(r.cycles.size(), 3u);
+  for (const auto& c : r.cycles) {
+    EXPECT_TRUE(c.compaction_recorded);
+    EXPECT_EQ(c.compaction, 0.3);
+  }
+  RunCompaction k = run_compaction(r.cycles);
+  EXPECT_EQ(k.value, 0.3);
+  EXPECT_TRUE(k.note.empty());
+
+  r = read_with({0.3, 0.3, 0.18});  // a protocol whose compaction changes between cycles
+  EXPECT_EQ(r.cycles[2].compaction, 0.18);
+  k = run_compaction(r.cycles);
+  EXPECT_FALSE(k.value.has_value());
+  EXPECT_NE(k.note.find("differs from cycle to cycle"), std::string::npos) << k.note;
+  EXPECT_NE(k.note.find("0.3 in cycle(s) 1-2"), std::string::npos) << k.note;
+  EXPECT_NE(k.note.find("0.18 in cycle(s) 3"), std::string::npos) << k.note;
+
+  r = read_with({0.3, NAN, 0.3});  // cycle 2 has no compacting stage
+  EXPECT_TRUE(r.cycles[1].compaction_recorded);
+  EXPECT_FALSE(r.cycles[1].compaction.has_value());
+  k = run_compaction(r.cycles);
+  EXPECT_FALSE(k.value.has_value());
+  EXPECT_NE(k.note.find("no stage of cycle(s) 2 compacts"), std::string::npos) << k.note;
+
+  r = read_with({});  // an older file
+  k = run_compaction(r.cycles);
+  EXPECT_FALSE(k.value.has_value());
+  EXPECT_NE(k.note.find("records no compaction ratio"), std::string::npos) << k.note;
+
+  // A ratio outside (0, 1] is a damaged file, refused naming the attribute.
+  for (double bad : {0.0, 1.5, -0.2, std::numeric_limits<double>::infinity()}) {
+    try {
+      read_with({0.3, bad, 0.3});
+      ADD_FAILURE() << "accepted compaction " << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("/cycles/0002@compaction"), std::string::npos) << e.what();
+    }
+  }
+  std::filesystem::remove(path);
+}
+
+TEST(CompactionNote, CycleRanges) {
+  EXPECT_EQ(cycle_ranges({5, 1, 2, 3, 7, 8}), "1-3, 5, 7-8");
+  EXPECT_EQ(cycle_ranges({4}), "4");
+  EXPECT_EQ(cycle_ranges({}), "");
 }
 
 TEST(RunReader, BadInputNamesTheProblem) {

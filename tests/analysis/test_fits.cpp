@@ -22,6 +22,39 @@ TEST(LogLaw, ExactDataRecovered) {
   EXPECT_NEAR(f.C, 14.0, 1e-6);
   EXPECT_NEAR(f.n0, 2.7, 1e-6);
   EXPECT_NEAR(f.r2, 1.0, 1e-12);
+  EXPECT_FALSE(f.at_bound);
+}
+
+// Data whose least-squares optimum lies at no finite n0 stop on the bound of the search: all the
+// length in the first cycle (n0 -> 0) or no bend at all (n0 -> oo). C is then the best C at that
+// n0 (the law is linear in C), and the covariance still says that n0 is not determined.
+TEST(LogLaw, OptimumBeyondTheRangeStopsOnItsBound) {
+  const std::vector<double> n = {1, 2, 3, 4, 5};
+  auto best_C = [&](const std::vector<double>& y, const std::vector<double>& s, double n0) {
+    double gy = 0, gg = 0;
+    for (std::size_t i = 0; i < n.size(); ++i) {
+      const double g = std::log1p(n[i] / n0), w = 1 / (s[i] * s[i]);
+      gy += w * g * y[i], gg += w * g * g;
+    }
+    return gy / gg;
+  };
+  const std::vector<double> flat = {10.0, 10.1, 10.05, 10.2, 10.1}, s = {0.3, 0.2, 0.2, 0.3, 0.2};
+  const LogLawFit f = fit_log_law(n, flat, s);
+  EXPECT_TRUE(f.at_bound);
+  EXPECT_TRUE(f.converged);
+  EXPECT_NEAR(f.n0, kN0Min, 1e-9 * kN0Min);
+  EXPECT_NEAR(f.C, best_C(flat, s, kN0Min), 1e-9 * f.C);
+  EXPECT_GT(f.sigma_n0, f.n0);
+  const std::vector<double> line = {2.0, 4.1, 5.9, 8.0, 10.1}, ones(5, 1.0);
+  const LogLawFit g = fit_log_law(n, line);
+  EXPECT_TRUE(g.at_bound);
+  EXPECT_NEAR(g.n0, kN0Max, 1e-9 * kN0Max);
+  EXPECT_NEAR(g.C, best_C(line, ones, kN0Max), 1e-9 * g.C);
+  EXPECT_NEAR(g.C / g.n0, 2.0, 0.05);  // the slope is what such data fix
+  // Falling data: the best C >= 0 is 0, on its bound.
+  const LogLawFit h = fit_log_law_increments({0, 1, 2, 3}, {1, 2, 3, 4}, {0.5, -1.0, -1.5, -2.0});
+  EXPECT_TRUE(h.at_bound);
+  EXPECT_GE(h.C, 0.0);
 }
 
 TEST(LogLaw, IncrementFitRecoversExactIncrements) {

@@ -20,7 +20,7 @@ struct CountingSink : RunSink {
     ++frames;
     if (model) terms[stage] = model->terms().size();
   }
-  void stage_end(int, int, const std::string&, const State&) override { ++stage_ends; }
+  void stage_end(int, int, const Stage&, const State&) override { ++stage_ends; }
   void cycle_end(int, const State&) override { ++cycles; }
   void checkpoint(const Checkpoint&) override {}
 };

@@ -6,6 +6,7 @@
 #include "tests/support/scratch.hpp"
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
@@ -139,6 +140,14 @@ void expect_same_run(const RunRecord& a, const RunRecord& b) {
     EXPECT_TRUE(x.mode == 0 || x.mode == 1) << "log row " << k;
     EXPECT_TRUE(std::isfinite(x.a_ratio_avg) && x.a_ratio_avg >= 0) << "log row " << k;
   }
+  // The compaction each cycle's compress stage imposed is recorded alike across the
+  // interruption (a cycle's value comes from its stage ends, which a resumed run reads back).
+  ASSERT_EQ(a.cycles.size(), b.cycles.size());
+  for (std::size_t k = 0; k < a.cycles.size(); ++k)
+    EXPECT_EQ(b.cycles[k].compaction, a.cycles[k].compaction) << "cycle " << k + 1;
+  ASSERT_EQ(a.stage_ends.size(), b.stage_ends.size());
+  for (std::size_t k = 0; k < a.stage_ends.size(); ++k)
+    EXPECT_EQ(b.stage_ends[k].compaction, a.stage_ends[k].compaction) << "stage end " << k;
 }
 
 }  // namespace
@@ -154,6 +163,9 @@ TEST(Cli, InterruptedRunResumesToTheUninterruptedResult) {
   fs::remove(kDir / "whole.xdmf");
   ASSERT_EQ(sim(cfg.string() + " -o " + whole.string() + " --threads 1 --quiet").code, 0);
   const RunRecord a = read_run_file(whole.string());
+  const double given = YAML::Load(kTiny)["protocol"]["stages"][1]["compaction"].as<double>();
+  ASSERT_EQ(a.cycles.size(), 2u);
+  for (const auto& c : a.cycles) EXPECT_EQ(c.compaction, given);
   for (const int signo : {SIGKILL, SIGTERM, SIGINT}) {
     SCOPED_TRACE(strsignal(signo));
     const fs::path out = kDir / ("stopped" + std::to_string(signo) + ".h5");

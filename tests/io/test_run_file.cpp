@@ -1,8 +1,10 @@
 // The run file: an exact HDF5 round trip of mesh, frames, cycles, log, meta, costs and
-// checkpoint; older files without the logged average, the stage walls or the costs; write
-// failures; bad files.
+// checkpoint; the compaction recorded per stage end and per cycle (and by the sink); older files
+// without the logged average, the stage walls, the costs or the compaction; write failures; bad
+// files.
 #include "sim/core/errors.hpp"
 #include "sim/io/h5.hpp"
+#include "sim/apps/run_sink.hpp"
 #include "sim/io/run_file.hpp"
 #include "tests/support/grid_mesh.hpp"
 #include "tests/support/scratch.hpp"
@@ -34,10 +36,10 @@ TEST(RunFile, RoundTripIsExact) {
   };
   const Index n3 = 3 * r.mesh.num_nodes(), nh = r.mesh.num_hinges();
   for (int k = 0; k < 3; ++k) r.frames.push_back({State{random_vec(n3), random_vec(n3), random_vec(nh), 0.1 * k}, "roll", 1, 10L * k});
-  CycleRecord c{1, 2.5, random_vec(n3), random_vec(nh)};
+  CycleRecord c{1, 2.5, random_vec(n3), random_vec(nh), 0.35};
   r.cycles.push_back(c);
   r.stage_ends.push_back({1, 0, "roll", 0.2, random_vec(nh)});
-  r.stage_ends.push_back({1, 1, "compress", 1.25, random_vec(nh), 12.5});
+  r.stage_ends.push_back({1, 1, "compress", 1.25, random_vec(nh), 12.5, 0.35});
   LogRow row;
   row.t = 0.3, row.h = 1e-3, row.mode = 1, row.newton_iters = 2, row.cg_iters = 40, row.e_bend = 7;
   row.order = 3, row.a_ratio = 2e-3, row.a_ratio_avg = 1.5e-3;
@@ -75,6 +77,7 @@ TEST(RunFile, RoundTripIsExact) {
   EXPECT_EQ(q.frames[2].step, 20);
   ASSERT_EQ(q.cycles.size(), 1u);
   EXPECT_EQ(q.cycles[0].p, c.p);
+  EXPECT_EQ(q.cycles[0].compaction, c.compaction);
   ASSERT_EQ(q.stage_ends.size(), 2u);
   EXPECT_EQ(q.stage_ends[1].p, r.stage_ends[1].p);
   EXPECT_EQ(q.stage_ends[1].stage, "compress");
@@ -83,6 +86,8 @@ TEST(RunFile, RoundTripIsExact) {
   EXPECT_EQ(q.stage_ends[1].t, 1.25);
   EXPECT_EQ(q.stage_ends[1].wall, 12.5);
   EXPECT_TRUE(std::isnan(q.stage_ends[0].wall));  // not measured: stays NaN
+  EXPECT_EQ(q.stage_ends[1].compaction, r.stage_ends[1].compaction);
+  EXPECT_FALSE(q.stage_ends[0].compaction.has_value());  // the roll compacts nothing
   ASSERT_EQ(q.log.size(), 2u);
   EXPECT_EQ(q.log[1].cg_iters, 40);
   EXPECT_EQ(q.log[1].e_bend, 7);
@@ -104,6 +109,85 @@ TEST(RunFile, RoundTripIsExact) {
   EXPECT_EQ(q.checkpoint->stepper, ck.stepper);
   EXPECT_EQ(q.checkpoint->apparatus.radius, 0.0177);
   EXPECT_EQ(q.checkpoint->rng_at_stage_begin, "1 2 3");
+}
+
+// The cycle's compaction is the strongest (smallest) that a stage of that cycle reported; NaN
+// when none did. A cycle written as such (NaN) and one of a file from before the attribute
+// existed both read back as NaN.
+TEST(RunFile, CycleCompactionFromItsStageEnds) {
+  const VecX p;
+  std::vector<StageEndRecord> ends = {{1, 0, "roll", 0.1, p},
+                                      {1, 1, "compress", 0.2, p, NAN, 0.4},
+                                      {1, 2, "compress", 0.3, p, NAN, 0.25},
+                                      {1, 3, "unfold", 0.4, p},
+                                      {2, 0, "roll", 0.5, p},
+                                      {2, 1, "compress", 0.6, p, NAN, 0.6},
+                                      {3, 0, "roll", 0.7, p}};
+  EXPECT_EQ(cycle_compaction(ends, 1), 0.25);
+  EXPECT_EQ(cycle_compaction(ends, 2), 0.6);
+  EXPECT_TRUE(std::isnan(cycle_compaction(ends, 3)));  // no compacting stage
+  EXPECT_TRUE(std::isnan(cycle_compaction(ends, 4)));  // no stage at all
+
+  RunRecord r;
+  r.mesh = crumple::testing::grid_mesh(3, 3, 0.1, 0.1, 0.0, 1);
+  const Index n3 = 3 * r.mesh.num_nodes(), nh = r.mesh.num_hinges();
+  CycleRecord c{1, 1.0, VecX::Zero(n3), VecX::Zero(nh)};
+  r.cycles = {c, c};
+  r.cycles[0].compaction = 0.3;
+  r.cycles[1].cycle = 2;  // compaction left NaN: no compacting stage
+  const std::string path = (std::filesystem::temp_directory_path() / "crumple_compaction.h5").string();
+  write_run_file(path, r);
+  const RunRecord q = read_run_file(path);
+  ASSERT_EQ(q.cycles.size(), 2u);
+  EXPECT_EQ(q.cycles[0].compaction, 0.3);
+  EXPECT_TRUE(std::isnan(q.cycles[1].compaction));
+  {
+    H5::H5File f(path, H5F_ACC_RDWR);
+    f.openGroup("cycles/0001").removeAttr("compaction");  // written before it was recorded
+  }
+  EXPECT_TRUE(std::isnan(read_run_file(path).cycles[0].compaction));
+  std::filesystem::remove(path);
+}
+
+namespace {
+/// A stage that does nothing, of a given type and compaction, for the sink's stage ends.
+struct FixedStage : Stage {
+  std::string name;
+  std::optional<double> ratio;
+  FixedStage(std::string n, std::optional<double> r) : name(std::move(n)), ratio(r) {}
+  std::string type() const override { return name; }
+  void begin(StageContext&) override {}
+  bool done(StageContext&) override { return true; }
+  std::optional<double> compaction() const override { return ratio; }
+};
+}  // namespace
+
+// The run file's sink records what each stage reported and gives the cycle the compaction of
+// its stage ends, those it holds from before a resume included: here the compress stage of
+// cycle 1 ended in the process that wrote the checkpoint, and this one only ends the cycle.
+TEST(RunFile, SinkTakesTheCycleCompactionFromItsStageEnds) {
+  SheetModel model(crumple::testing::grid_mesh(3, 3, 0.1, 0.1, 0.0, 1), ModelParams{});
+  Integrator integ(model, IntegratorSettings{});
+  RunRecord rec;
+  rec.mesh = model.mesh();
+  const State s = model.rest_state();
+  rec.stage_ends.push_back({1, 0, "roll", 0.1, s.p});
+  rec.stage_ends.push_back({1, 1, "compress", 0.2, s.p, NAN, 0.4});  // read back on resume
+  const std::string path = (std::filesystem::temp_directory_path() / "crumple_sink.h5.tmp").string();
+  FileSink sink(rec, path, integ);
+  sink.stage_end(1, 2, FixedStage("unfold", std::nullopt), s);
+  sink.cycle_end(1, s);
+  sink.stage_end(2, 0, FixedStage("roll", std::nullopt), s);
+  sink.stage_end(2, 1, FixedStage("compress", 0.3), s);
+  sink.cycle_end(2, s);
+  sink.stage_end(3, 0, FixedStage("roll", std::nullopt), s);
+  sink.cycle_end(3, s);
+  ASSERT_EQ(rec.cycles.size(), 3u);
+  EXPECT_EQ(rec.cycles[0].compaction, 0.4);
+  EXPECT_EQ(rec.cycles[1].compaction, 0.3);
+  EXPECT_TRUE(std::isnan(rec.cycles[2].compaction));  // no compacting stage in cycle 3
+  EXPECT_EQ(rec.stage_ends[4].compaction, 0.3);
+  EXPECT_FALSE(rec.stage_ends[2].compaction.has_value());
 }
 
 // A file written before the moving average was logged reads with NaN in its place; a column

@@ -7,6 +7,7 @@
 #include "tests/support/grid_mesh.hpp"
 
 #include <cmath>
+#include <optional>
 
 namespace crumple::testing {
 
@@ -44,6 +45,7 @@ struct MemorySink : RunSink {
     int cycle, index;
     std::string type;
     State state;
+    std::optional<double> compaction;  ///< what the stage reported (Stage::compaction())
   };
   std::vector<StageEnd> stage_ends;
   int kill_after = -1;  ///< throw Killed after this many checkpoints (simulates SIGKILL)
@@ -52,8 +54,8 @@ struct MemorySink : RunSink {
     frames.push_back(s);
     frame_stages.push_back(stage);
   }
-  void stage_end(int cycle, int index, const std::string& type, const State& s) override {
-    stage_ends.push_back({cycle, index, type, s});
+  void stage_end(int cycle, int index, const Stage& stage, const State& s) override {
+    stage_ends.push_back({cycle, index, stage.type(), s, stage.compaction()});
   }
   void cycle_end(int, const State& s) override { cycles.push_back(s); }
   void checkpoint(const Checkpoint& c) override {

@@ -5,6 +5,7 @@
 #include "tests/support/scratch.hpp"
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -64,4 +65,12 @@ TEST(ProtocolFiles, AxialCycleNeverPassesThroughItself) {
   ASSERT_EQ(r.stage_ends.size(), 4u);
   EXPECT_EQ(r.stage_ends[1].stage, "compress");
   EXPECT_EQ(r.stage_ends[3].p, r.cycles.at(0).p);
+  // The compaction the compress stage was given (as the run resolved its configuration) is
+  // recorded at its stage end and for the cycle; the other stages record none.
+  const YAML::Node stage = YAML::Load(r.config)["protocol"]["stages"][1];
+  ASSERT_EQ(stage["type"].as<std::string>(), "compress");
+  const double given = stage["compaction"].as<double>();
+  EXPECT_EQ(r.stage_ends[1].compaction, given);
+  for (int k : {0, 2, 3}) EXPECT_FALSE(r.stage_ends[k].compaction.has_value()) << k;
+  EXPECT_EQ(r.cycles.at(0).compaction, given);
 }

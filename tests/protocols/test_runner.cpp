@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 #include <omp.h>
+#include <yaml-cpp/yaml.h>
 
 using namespace crumple;
 using crumple::testing::MemorySink;
@@ -178,6 +179,11 @@ TEST(Stages, CyclesCreasesAreMadeByTheCompression) {
     EXPECT_EQ(r.sink.stage_ends[k].cycle, 1);
     EXPECT_EQ(r.sink.stage_ends[k].index, k);
     EXPECT_EQ(r.sink.stage_ends[k].type, types[k]);
+    // Only the compress stage compacts the sheet, and it reports the compaction it was given.
+    if (k == 1)
+      EXPECT_EQ(r.sink.stage_ends[k].compaction, YAML::Load(kCycle)[1]["compaction"].as<double>());
+    else
+      EXPECT_FALSE(r.sink.stage_ends[k].compaction.has_value()) << types[k];
   }
   ASSERT_EQ(r.sink.cycles.size(), 1u);
   EXPECT_EQ(r.sink.stage_ends[3].state.p, r.sink.cycles[0].p);
