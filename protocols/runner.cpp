@@ -79,9 +79,118 @@ void ProtocolRunner::progress(const Stage& stage, const StageContext& ctx, int k
   std::fprintf(stderr, "%s\n", os.str().c_str());
 }
 
+namespace {
+constexpr double kEps = 1e-12;  // simulated-time slack of the stage and frame boundaries
+}  // namespace
+
+// `resume` is the checkpoint when this stage is the one it was taken in (or before).
+ProtocolRunner::StageStart ProtocolRunner::begin_stage(Stage& stage, StageContext& ctx, State& s,
+                                                       const Checkpoint* resume) {
+  StageStart start;
+  stage_wall_start_ = std::chrono::steady_clock::now();
+  if (resume && resume->in_stage) {
+    // Rebuild the stage exactly as it was built, then return to the checkpointed state.
+    set_rng_state(ctx.rng, resume->rng_at_stage_begin);
+    set_contact_(resume->contact_at_stage_begin);
+    start = {resume->stage_begin, resume->rng_at_stage_begin, resume->contact_at_stage_begin};
+    s = start.state;
+    ctx.t_begin = resume->stage_t_begin;
+    stage.begin(ctx);
+    s = resume->state;
+    stage.done(ctx);  // replays the last check: stage-internal phases as they were
+    model_.rebuild_pattern();
+    stepper_.restore(resume->stepper);
+    return start;
+  }
+  if (resume) {  // taken at this stage's start
+    set_rng_state(ctx.rng, resume->rng_at_stage_begin);
+    set_contact_(resume->contact_at_stage_begin);
+    s = resume->state;
+    stepper_.restore(resume->stepper);
+  }
+  start = {s, rng_state(ctx.rng), contact_on_()};
+  ctx.t_begin = s.t;
+  stage.begin(ctx);
+  model_.rebuild_pattern();
+  stepper_.restart();
+  return start;
+}
+
+// Chunks end on the fixed grid of checks and frames (and at t_max and max_duration), so a run
+// resumed from a checkpoint takes the steps the uninterrupted one takes.
+bool ProtocolRunner::advance_stage(Stage& stage, StageContext& ctx, State& s, RunSink& sink,
+                                   int c, int k, const StageStart& start) {
+  const auto checkpoint_here = [&] {
+    return make_checkpoint(ctx, c, k, true, start.state, start.rng, start.contact);
+  };
+  for (;;) {
+    if (s.t >= cfg_.t_max - kEps) {
+      stage.end(ctx);
+      stage_wall_[stage.type()] += std::chrono::duration<double>(
+          std::chrono::steady_clock::now() - stage_wall_start_).count();
+      if (!cfg_.quiet) std::fprintf(stderr, "stopped at t_max = %g s\n", cfg_.t_max);
+      sink.checkpoint(make_checkpoint(ctx, c, k, false, s, start.rng, start.contact));
+      return false;
+    }
+    const double ci = stage.check_interval;
+    const double since = s.t - ctx.t_begin;
+    const double next_check = ctx.t_begin + (std::floor(since / ci + 1e-9) + 1.0) * ci;
+    const double t_end =
+        std::min({next_check, next_frame_, cfg_.t_max, ctx.t_begin + stage.max_duration});
+    try {
+      stepper_.advance_to(s, t_end);
+    } catch (const NumericalFailure& e) {
+      sink.checkpoint(checkpoint_here());
+      std::ostringstream os;
+      os << "stage " << stage.type() << " (cycle " << c << ", stage " << k + 1 << "), t = " << s.t
+         << " s: " << e.what();
+      throw NumericalFailure(os.str());
+    }
+    if (s.t >= next_frame_ - kEps) {
+      sink.frame(s, stage.type(), c);
+      next_frame_ += cfg_.frame_dt;
+    }
+    bool finished = stage.done(ctx);
+    progress(stage, ctx, k, false);
+    if (!finished && s.t >= ctx.t_begin + stage.max_duration - kEps) {
+      if (!cfg_.quiet)
+        std::fprintf(stderr, "warning: stage %s (cycle %d) reached max_duration %g s before "
+                             "its target [%s]\n",
+                     stage.type().c_str(), c, stage.max_duration, stage.progress(ctx).c_str());
+      finished = true;
+    }
+    if (finished) return true;
+    const auto now = std::chrono::steady_clock::now();
+    const int stop = cfg_.stop_requested();
+    if (stop || std::chrono::duration<double>(now - last_checkpoint_).count() >=
+                    cfg_.checkpoint_wall_s) {
+      sink.checkpoint(checkpoint_here());
+      last_checkpoint_ = now;
+    }
+    if (stop) throw Interrupted(stop, stopped_message(stop, stage, c, s.t));
+  }
+}
+
+void ProtocolRunner::finish_stage(Stage& stage, StageContext& ctx, State& s, RunSink& sink,
+                                  int c, int k, const StageStart& start) {
+  stage.end(ctx);
+  progress(stage, ctx, k, true);
+  stage_wall_[stage.type()] +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - stage_wall_start_).count();
+  stepper_.restart();
+  sink.stage_end(c, k, stage, s);
+  if (k + 1 == num_stages_) {
+    sink.cycle_end(c, s);
+    ctx.cycle = c + 1;
+    sink.checkpoint(make_checkpoint(ctx, c + 1, 0, false, s, start.rng, start.contact));
+  } else {
+    sink.checkpoint(make_checkpoint(ctx, c, k + 1, false, s, start.rng, start.contact));
+  }
+  last_checkpoint_ = std::chrono::steady_clock::now();
+}
+
 bool ProtocolRunner::run(State& s, RunSink& sink, const Checkpoint* resume) {
-  start_ = last_progress_ = stage_wall_start_ = std::chrono::steady_clock::now();
-  auto last_checkpoint = start_;
+  start_ = last_progress_ = stage_wall_start_ = last_checkpoint_ = std::chrono::steady_clock::now();
   StageContext ctx;
   ctx.model = &model_;
   ctx.state = &s;
@@ -102,111 +211,16 @@ bool ProtocolRunner::run(State& s, RunSink& sink, const Checkpoint* resume) {
       next_frame_ += cfg_.frame_dt;
     }
   }
-  const double eps = 1e-12;
-
   for (int c = c0; c <= cfg_.cycles; ++c) {
     ctx.cycle = c;
     if (!(resume && c == c0)) ctx.apparatus = Apparatus{};
     for (int k = (c == c0 ? k0 : 0); k < num_stages_; ++k) {
       std::unique_ptr<Stage> stage = make_(k);
-      State stage_begin;
-      std::string rng_begin;
-      bool contact_begin;
-      stage_wall_start_ = std::chrono::steady_clock::now();
-      if (resume && c == c0 && k == k0 && resume->in_stage) {
-        // Rebuild the stage exactly as it was built, then return to the checkpointed state.
-        set_rng_state(ctx.rng, resume->rng_at_stage_begin);
-        set_contact_(resume->contact_at_stage_begin);
-        stage_begin = resume->stage_begin;
-        rng_begin = resume->rng_at_stage_begin;
-        contact_begin = resume->contact_at_stage_begin;
-        s = stage_begin;
-        ctx.t_begin = resume->stage_t_begin;
-        stage->begin(ctx);
-        s = resume->state;
-        stage->done(ctx);  // replays the last check: stage-internal phases as they were
-        model_.rebuild_pattern();
-        stepper_.restore(resume->stepper);
-      } else {
-        if (resume && c == c0 && k == k0) {
-          set_rng_state(ctx.rng, resume->rng_at_stage_begin);
-          set_contact_(resume->contact_at_stage_begin);
-          s = resume->state;
-          stepper_.restore(resume->stepper);
-        }
-        stage_begin = s;
-        rng_begin = rng_state(ctx.rng);
-        contact_begin = contact_on_();
-        ctx.t_begin = s.t;
-        stage->begin(ctx);
-        model_.rebuild_pattern();
-        stepper_.restart();
-      }
+      const bool resumed_here = resume && c == c0 && k == k0;
+      const StageStart start = begin_stage(*stage, ctx, s, resumed_here ? resume : nullptr);
       progress(*stage, ctx, k, true);
-
-      bool finished = false;
-      while (!finished) {
-        if (s.t >= cfg_.t_max - eps) {
-          stage->end(ctx);
-          stage_wall_[stage->type()] += std::chrono::duration<double>(
-              std::chrono::steady_clock::now() - stage_wall_start_).count();
-          if (!cfg_.quiet) std::fprintf(stderr, "stopped at t_max = %g s\n", cfg_.t_max);
-          sink.checkpoint(make_checkpoint(ctx, c, k, false, s, rng_begin, contact_begin));
-          return false;
-        }
-        const double ci = stage->check_interval;
-        const double since = s.t - ctx.t_begin;
-        const double next_check = ctx.t_begin + (std::floor(since / ci + 1e-9) + 1.0) * ci;
-        const double t_end = std::min({next_check, next_frame_, cfg_.t_max,
-                                       ctx.t_begin + stage->max_duration});
-        try {
-          stepper_.advance_to(s, t_end);
-        } catch (const NumericalFailure& e) {
-          sink.checkpoint(make_checkpoint(ctx, c, k, true, stage_begin, rng_begin, contact_begin));
-          std::ostringstream os;
-          os << "stage " << stage->type() << " (cycle " << c << ", stage " << k + 1 << "), t = "
-             << s.t << " s: " << e.what();
-          throw NumericalFailure(os.str());
-        }
-        if (s.t >= next_frame_ - eps) {
-          sink.frame(s, stage->type(), c);
-          next_frame_ += cfg_.frame_dt;
-        }
-        finished = stage->done(ctx);
-        progress(*stage, ctx, k, false);
-        if (!finished && s.t >= ctx.t_begin + stage->max_duration - eps) {
-          if (!cfg_.quiet)
-            std::fprintf(stderr, "warning: stage %s (cycle %d) reached max_duration %g s before "
-                                 "its target [%s]\n",
-                         stage->type().c_str(), c, stage->max_duration,
-                         stage->progress(ctx).c_str());
-          finished = true;
-        }
-        const auto now = std::chrono::steady_clock::now();
-        const int stop = cfg_.stop_requested();
-        if (!finished && (stop || std::chrono::duration<double>(now - last_checkpoint).count() >=
-                                      cfg_.checkpoint_wall_s)) {
-          sink.checkpoint(make_checkpoint(ctx, c, k, true, stage_begin, rng_begin, contact_begin));
-          last_checkpoint = now;
-        }
-        // A chunk ends on the fixed grid of checks and frames, so a run resumed from here takes
-        // the steps the uninterrupted one takes.
-        if (!finished && stop) throw Interrupted(stop, stopped_message(stop, *stage, c, s.t));
-      }
-      stage->end(ctx);
-      progress(*stage, ctx, k, true);
-      stage_wall_[stage->type()] +=
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - stage_wall_start_).count();
-      stepper_.restart();
-      sink.stage_end(c, k, *stage, s);
-      if (k + 1 == num_stages_) {
-        sink.cycle_end(c, s);
-        ctx.cycle = c + 1;
-        sink.checkpoint(make_checkpoint(ctx, c + 1, 0, false, s, rng_begin, contact_begin));
-      } else {
-        sink.checkpoint(make_checkpoint(ctx, c, k + 1, false, s, rng_begin, contact_begin));
-      }
-      last_checkpoint = std::chrono::steady_clock::now();
+      if (!advance_stage(*stage, ctx, s, sink, c, k, start)) return false;
+      finish_stage(*stage, ctx, s, sink, c, k, start);
       const bool last = c == cfg_.cycles && k + 1 == num_stages_;
       if (const int stop = cfg_.stop_requested(); stop && !last)
         throw Interrupted(stop, stopped_message(stop, *stage, c, s.t));

@@ -94,6 +94,21 @@ class ProtocolRunner {
   const std::map<std::string, double>& stage_wall() const { return stage_wall_; }
 
  private:
+  /// What a stage began from: the state, the random generator and the contact switch (a
+  /// checkpoint inside the stage rebuilds the stage from these).
+  struct StageStart {
+    State state;
+    std::string rng;
+    bool contact = true;
+  };
+  // The steps of run(), per stage: begin (fresh, or rebuilt from a checkpoint), advance in
+  // chunks to its end, finish.
+  StageStart begin_stage(Stage& stage, StageContext& ctx, State& s, const Checkpoint* resume);
+  /// False when the run reached t_max inside the stage (after a checkpoint).
+  bool advance_stage(Stage& stage, StageContext& ctx, State& s, RunSink& sink, int c, int k,
+                     const StageStart& start);
+  void finish_stage(Stage& stage, StageContext& ctx, State& s, RunSink& sink, int c, int k,
+                    const StageStart& start);
   void progress(const Stage& stage, const StageContext& ctx, int k, bool force);
   Checkpoint make_checkpoint(const StageContext& ctx, int cycle, int stage, bool in_stage,
                              const State& stage_begin, const std::string& rng_begin,
@@ -109,7 +124,8 @@ class ProtocolRunner {
   std::function<bool()> contact_on_ = [] { return false; };
   double next_frame_ = 0;
   std::map<std::string, double> stage_wall_;
-  std::chrono::steady_clock::time_point start_, last_progress_, stage_wall_start_;
+  std::chrono::steady_clock::time_point start_, last_progress_, stage_wall_start_,
+      last_checkpoint_;
 };
 
 /// mt19937_64 state as text and back (checkpoints).
