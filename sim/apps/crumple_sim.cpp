@@ -86,7 +86,7 @@ Params load_run(const Options& o, const std::string& tmp, RunRecord& rec) {
     return given;
   }
   rec = read_run_file(tmp);
-  const Params stored = load_config_text(rec.config, tmp + ":/config");
+  const Params stored = load_stored_config(rec.config, tmp + ":/config");
   const std::vector<std::string> changes = resume_changes(stored, given, tmp);
   validate_checkpoint(rec, given, tmp);
   ResumeRecord r;

@@ -69,8 +69,10 @@ class SectionReader {
       ctx_.fail(node_, section_.name, "expected a map of keys, got " + scalar_text(node_));
     for (auto it = node_.begin(); it != node_.end(); ++it) {
       const std::string key = it->first.Scalar();
-      if (!section_.find(key))
-        ctx_.fail(it->first, dotted(key), "unknown key (valid: " + join(section_.names()) + ")");
+      if (section_.find(key)) continue;
+      for (const auto& [retired, why] : retired_keys())
+        if (retired == dotted(key)) ctx_.fail(it->first, dotted(key), why);
+      ctx_.fail(it->first, dotted(key), "unknown key (valid: " + join(section_.names()) + ")");
     }
   }
 
@@ -377,6 +379,27 @@ Params load_config(const std::string& path, const std::vector<std::string>& over
 Params load_config_text(const std::string& text, const std::string& name,
                         const std::vector<std::string>& overrides) {
   return load_from(text, name, overrides);
+}
+
+Params load_stored_config(const std::string& text, const std::string& name) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException&) {
+    return load_from(text, name, {});  // reports the syntax error with its place
+  }
+  bool dropped = false;
+  for (const auto& [dotted, why] : retired_keys()) {
+    const auto dot = dotted.find('.');
+    YAML::Node section = root[dotted.substr(0, dot)];
+    if (section.IsMap() && section[dotted.substr(dot + 1)])
+      dropped = section.remove(dotted.substr(dot + 1)) || dropped;
+  }
+  if (!dropped) return load_from(text, name, {});
+  YAML::Emitter e;
+  e.SetDoublePrecision(17);
+  e << root;
+  return load_from(e.c_str(), name, {});
 }
 
 std::string resolved_yaml(const Params& p) {

@@ -140,6 +140,15 @@ const Key* find_key(const std::string& dotted) {
   return nullptr;
 }
 
+const std::vector<std::pair<std::string, std::string>>& retired_keys() {
+  static const std::vector<std::pair<std::string, std::string>> keys = {
+      {"output.crease_threshold",
+       "retired: the run file stores the plastic field p and crumple-analyze applies the crease "
+       "threshold (--threshold, default 0.5 c0)"},
+  };
+  return keys;
+}
+
 std::vector<std::string> resumable_keys() {
   std::vector<std::string> v;
   for (const auto& cs : config_schema())

@@ -26,6 +26,10 @@ const schema::Key* find_key(const std::string& dotted);
 /// Dotted keys that may differ when a run is resumed (Key::resumable), in schema order.
 std::vector<std::string> resumable_keys();
 
+/// Keys that existed once and were removed: dotted key -> why (an older run file's stored
+/// configuration may still hold them; a config that gives one is told what replaced it).
+const std::vector<std::pair<std::string, std::string>>& retired_keys();
+
 /// The value of a key in `p` as the docs and --list-keys print it ("0.1", "true", "square").
 std::string value_text(const schema::Key& key, const void* section_values);
 

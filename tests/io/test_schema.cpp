@@ -193,3 +193,17 @@ TEST(Schema, DocsRangeNotation) {
   EXPECT_EQ(schema::format_number(0.1), "0.1");
   EXPECT_EQ(schema::format_number(1.0 / 3.0), "0.3333333333333333");
 }
+
+// A key removed from the schema: a config that gives it is told why; a run file's stored
+// configuration that holds it still loads (an older run can be resumed).
+TEST(Schema, RetiredKeysAreExplainedAndDroppedFromStoredConfigs) {
+  const std::string e = error_of({"output.crease_threshold=0.05"});
+  EXPECT_NE(e.find("output.crease_threshold: retired"), std::string::npos) << e;
+  Params p;
+  p.protocol.stages = YAML::Load("[{type: roll}]");
+  std::string stored = resolved_yaml(p);
+  stored.replace(stored.find("output:\n"), 8, "output:\n  crease_threshold: 0.05\n");
+  EXPECT_THROW(load_config_text(stored, "run.h5:/config"), InputError);
+  const Params q = load_stored_config(stored, "run.h5:/config");
+  EXPECT_EQ(resolved_yaml(q), resolved_yaml(p));
+}
