@@ -44,35 +44,12 @@ int run_ensemble(const std::vector<std::string>& inputs, const std::string& out_
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  using namespace crumple::analysis;
-  AnalyzeOptions opt;
-  std::string run_path, out_dir;
-  CLI::App app{"crumple-analyze: crease length, crease maps, facet segmentation and fits of a "
-               "crumple run file (writes stats.json, CSVs and PNGs); `crumple-analyze ensemble "
-               "--help` for the statistics over several runs"};
-  app.footer("Exit codes: 0 done; 2 bad input (arguments, run file or output folder: nothing is "
-             "written); 1 any other error (an earlier output folder is left as it was).");
-  // Not required by CLI11: the ensemble subcommand has no run file (checked after parsing).
-  app.add_option("run", run_path, "run file (RUN.h5) written by crumple-sim");
-  std::vector<std::string> ens_inputs;
-  std::string ens_out;
-  CLI::App* ens = app.add_subcommand(
-      "ensemble",
-      "ensemble statistics over several runs of one protocol: per cycle the mean, seed-to-seed "
-      "s.d. and s.e.m. of every per-cycle quantity, the per-stage and threshold-sensitivity "
-      "tables, and the log-law fits to the ensemble means weighted by their s.e.m. "
-      "(docs/STATISTICS.md §2.3); written as JSON");
-  ens->add_option("analyses", ens_inputs,
-                  "the runs' crumple-analyze output folders (or their stats.json files)")
-      ->required();
-  ens->add_option("-o,--output", ens_out, "ensemble JSON file to write (e.g. results/ensemble.json)")
-      ->required();
-  ens->footer("Exit codes: 0 done; 2 bad input (a missing or unreadable stats.json: nothing is "
-              "written); 1 any other error.");
-  app.add_option("-o,--output", out_dir,
-                 "output folder (default: the run file's name with .h5 replaced by .analysis)");
-  double absolute = 0.0;
+namespace {
+
+using namespace crumple::analysis;
+
+/// The per-run analysis options (thresholds, raster, segmentation, resampling).
+void add_run_options(CLI::App& app, AnalyzeOptions& opt, double& absolute) {
   CLI::Option* by_c0 =
       app.add_option("--threshold-c0", opt.threshold_c0,
                      "crease when |p| > F c0, c0 the run's yield curvature (integrator.plastic_c0 "
@@ -103,36 +80,53 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(10, 100000));
   app.add_option("--seed", opt.seed, "seed of the resampling")->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
-    return rc == 0 ? 0 : 2;
-  }
-  if (ens->parsed()) {
-    // The per-run options mean nothing for the ensemble: refuse them rather than ignore them.
-    for (const CLI::Option* o : app.get_options())
-      if (o->count() > 0) {
-        std::cerr << "crumple-analyze ensemble: " << o->get_name()
-                  << " is an option of the per-run analysis, not of the ensemble\n";
-        return 2;
-      }
-    try {
-      return run_ensemble(ens_inputs, ens_out);
-    } catch (const InputError& e) {
-      std::cerr << "crumple-analyze ensemble: bad input: " << e.what() << "\n";
+}
+
+/// `crumple-analyze ensemble`: the per-run options mean nothing there, so they are refused
+/// rather than ignored.
+int ensemble_main(const CLI::App& app, const std::vector<std::string>& inputs,
+                  const std::string& out) {
+  for (const CLI::Option* o : app.get_options())
+    if (o->count() > 0) {
+      std::cerr << "crumple-analyze ensemble: " << o->get_name()
+                << " is an option of the per-run analysis, not of the ensemble\n";
       return 2;
-    } catch (const std::exception& e) {
-      std::cerr << "crumple-analyze ensemble: error: " << e.what() << "\n";
-      return 1;
     }
-  }
-  if (run_path.empty()) {
-    std::cerr << app.help() << "crumple-analyze: the run file (RUN.h5) is required\n";
-    return 2;
-  }
   try {
-    if (app.count("--threshold")) opt.threshold = absolute;
+    return run_ensemble(inputs, out);
+  } catch (const InputError& e) {
+    std::cerr << "crumple-analyze ensemble: bad input: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "crumple-analyze ensemble: error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+/// Per cycle: crease length, P, facets and a_fit; then the log-law fits.
+void print_summary(const std::string& run_path, const std::string& out_dir,
+                   const RunAnalysis& res) {
+  std::cout << "crumple-analyze: " << res.cycles.size() << " cycles of " << run_path
+            << " analysed into " << out_dir << "\n  " << res.threshold_rule.note << "\n";
+  for (const auto& c : res.cycles)
+    std::cout << "  cycle " << c.cycle << ": crease length " << c.crease_length_m << " m ("
+              << c.crease_length_L0 << " L0), P " << c.perimeter_P << ", facets "
+              << c.facets.size() << (c.shape ? ", a_fit " + std::to_string(c.shape->a_fit) : "")
+              << "\n";
+  if (res.fit_length)
+    std::cout << "  log law on l/L0: C = " << res.fit_length->C << " +- "
+              << res.fit_length->sigma_C << ", n0 = " << res.fit_length->n0 << " +- "
+              << res.fit_length->sigma_n0 << " (cumulative)\n";
+  if (res.fit_length_increments)
+    std::cout << "  log law on the increments of l/L0: C = " << res.fit_length_increments->C
+              << " +- " << res.fit_length_increments->sigma_C
+              << ", n0 = " << res.fit_length_increments->n0 << " +- "
+              << res.fit_length_increments->sigma_n0 << "\n";
+}
+
+/// One run: read (validated), check the output folder, analyse, write it whole.
+int analyze_main(const std::string& run_path, std::string out_dir, const AnalyzeOptions& opt) {
+  try {
     const RunData run = read_run(run_path);
     if (out_dir.empty())
       out_dir = std::filesystem::path(run_path).replace_extension(".analysis").string();
@@ -140,22 +134,7 @@ int main(int argc, char** argv) {
     const RunAnalysis res = analyze_run(run, opt);
     for (const auto& w : res.warnings) std::cerr << "crumple-analyze: warning: " << w << "\n";
     write_results(out_dir, run, res, opt);
-    std::cout << "crumple-analyze: " << res.cycles.size() << " cycles of " << run_path
-              << " analysed into " << out_dir << "\n  " << res.threshold_rule.note << "\n";
-    for (const auto& c : res.cycles)
-      std::cout << "  cycle " << c.cycle << ": crease length " << c.crease_length_m << " m ("
-                << c.crease_length_L0 << " L0), P " << c.perimeter_P << ", facets "
-                << c.facets.size() << (c.shape ? ", a_fit " + std::to_string(c.shape->a_fit) : "")
-                << "\n";
-    if (res.fit_length)
-      std::cout << "  log law on l/L0: C = " << res.fit_length->C << " +- "
-                << res.fit_length->sigma_C << ", n0 = " << res.fit_length->n0 << " +- "
-                << res.fit_length->sigma_n0 << " (cumulative)\n";
-    if (res.fit_length_increments)
-      std::cout << "  log law on the increments of l/L0: C = " << res.fit_length_increments->C
-                << " +- " << res.fit_length_increments->sigma_C
-                << ", n0 = " << res.fit_length_increments->n0 << " +- "
-                << res.fit_length_increments->sigma_n0 << "\n";
+    print_summary(run_path, out_dir, res);
     return 0;
   } catch (const InputError& e) {
     std::cerr << "crumple-analyze: bad input: " << e.what() << "\n";
@@ -164,4 +143,50 @@ int main(int argc, char** argv) {
     std::cerr << "crumple-analyze: error: " << e.what() << "\n";
     return 1;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  AnalyzeOptions opt;
+  std::string run_path, out_dir;
+  CLI::App app{"crumple-analyze: crease length, crease maps, facet segmentation and fits of a "
+               "crumple run file (writes stats.json, CSVs and PNGs); `crumple-analyze ensemble "
+               "--help` for the statistics over several runs"};
+  app.footer("Exit codes: 0 done; 2 bad input (arguments, run file or output folder: nothing is "
+             "written); 1 any other error (an earlier output folder is left as it was).");
+  // Not required by CLI11: the ensemble subcommand has no run file (checked after parsing).
+  app.add_option("run", run_path, "run file (RUN.h5) written by crumple-sim");
+  std::vector<std::string> ens_inputs;
+  std::string ens_out;
+  CLI::App* ens = app.add_subcommand(
+      "ensemble",
+      "ensemble statistics over several runs of one protocol: per cycle the mean, seed-to-seed "
+      "s.d. and s.e.m. of every per-cycle quantity, the per-stage and threshold-sensitivity "
+      "tables, and the log-law fits to the ensemble means weighted by their s.e.m. "
+      "(docs/STATISTICS.md §2.3); written as JSON");
+  ens->add_option("analyses", ens_inputs,
+                  "the runs' crumple-analyze output folders (or their stats.json files)")
+      ->required();
+  ens->add_option("-o,--output", ens_out, "ensemble JSON file to write (e.g. results/ensemble.json)")
+      ->required();
+  ens->footer("Exit codes: 0 done; 2 bad input (a missing or unreadable stats.json: nothing is "
+              "written); 1 any other error.");
+  app.add_option("-o,--output", out_dir,
+                 "output folder (default: the run file's name with .h5 replaced by .analysis)");
+  double absolute = 0.0;
+  add_run_options(app, opt, absolute);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
+  }
+  if (ens->parsed()) return ensemble_main(app, ens_inputs, ens_out);
+  if (run_path.empty()) {
+    std::cerr << app.help() << "crumple-analyze: the run file (RUN.h5) is required\n";
+    return 2;
+  }
+  if (app.count("--threshold")) opt.threshold = absolute;
+  return analyze_main(run_path, out_dir, opt);
 }
