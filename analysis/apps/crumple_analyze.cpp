@@ -82,6 +82,20 @@ void add_run_options(CLI::App& app, AnalyzeOptions& opt, double& absolute) {
   app.add_option("--seed", opt.seed, "seed of the resampling")->capture_default_str();
 }
 
+/// Runs `work` and turns its exceptions into the exit codes: 2 bad input, 1 anything else.
+template <class Work>
+int guarded(const char* who, Work work) {
+  try {
+    return work();
+  } catch (const InputError& e) {
+    std::cerr << who << ": bad input: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << who << ": error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
 /// `crumple-analyze ensemble`: the per-run options mean nothing there, so they are refused
 /// rather than ignored.
 int ensemble_main(const CLI::App& app, const std::vector<std::string>& inputs,
@@ -92,15 +106,7 @@ int ensemble_main(const CLI::App& app, const std::vector<std::string>& inputs,
                 << " is an option of the per-run analysis, not of the ensemble\n";
       return 2;
     }
-  try {
-    return run_ensemble(inputs, out);
-  } catch (const InputError& e) {
-    std::cerr << "crumple-analyze ensemble: bad input: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "crumple-analyze ensemble: error: " << e.what() << "\n";
-    return 1;
-  }
+  return guarded("crumple-analyze ensemble", [&] { return run_ensemble(inputs, out); });
 }
 
 /// Per cycle: crease length, P, facets and a_fit; then the log-law fits.
@@ -126,7 +132,7 @@ void print_summary(const std::string& run_path, const std::string& out_dir,
 
 /// One run: read (validated), check the output folder, analyse, write it whole.
 int analyze_main(const std::string& run_path, std::string out_dir, const AnalyzeOptions& opt) {
-  try {
+  return guarded("crumple-analyze", [&] {
     const RunData run = read_run(run_path);
     if (out_dir.empty())
       out_dir = std::filesystem::path(run_path).replace_extension(".analysis").string();
@@ -136,13 +142,7 @@ int analyze_main(const std::string& run_path, std::string out_dir, const Analyze
     write_results(out_dir, run, res, opt);
     print_summary(run_path, out_dir, res);
     return 0;
-  } catch (const InputError& e) {
-    std::cerr << "crumple-analyze: bad input: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "crumple-analyze: error: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }
 
 }  // namespace

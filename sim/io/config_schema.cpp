@@ -109,6 +109,13 @@ Section output_section() {
   return s;
 }
 
+/// A section bound to its member of Params.
+template <auto Member>
+ConfigSection bind(const Section& s) {
+  return {&s, [](Params& p) -> void* { return &(p.*Member); },
+          [](const Params& p) -> const void* { return &(p.*Member); }};
+}
+
 }  // namespace
 
 const std::vector<ConfigSection>& config_schema() {
@@ -116,18 +123,9 @@ const std::vector<ConfigSection>& config_schema() {
                        contact = contact_section(), protocol = protocol_section(),
                        output = output_section();
   static const std::vector<ConfigSection> all = {
-      {&mesh, [](Params& p) -> void* { return &p.mesh; },
-       [](const Params& p) -> const void* { return &p.mesh; }},
-      {&material, [](Params& p) -> void* { return &p.material; },
-       [](const Params& p) -> const void* { return &p.material; }},
-      {&integrator_schema(), [](Params& p) -> void* { return &p.integrator; },
-       [](const Params& p) -> const void* { return &p.integrator; }},
-      {&contact, [](Params& p) -> void* { return &p.contact; },
-       [](const Params& p) -> const void* { return &p.contact; }},
-      {&protocol, [](Params& p) -> void* { return &p.protocol; },
-       [](const Params& p) -> const void* { return &p.protocol; }},
-      {&output, [](Params& p) -> void* { return &p.output; },
-       [](const Params& p) -> const void* { return &p.output; }},
+      bind<&Params::mesh>(mesh),         bind<&Params::material>(material),
+      bind<&Params::integrator>(integrator_schema()), bind<&Params::contact>(contact),
+      bind<&Params::protocol>(protocol), bind<&Params::output>(output),
   };
   return all;
 }
