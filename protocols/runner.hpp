@@ -8,6 +8,7 @@
 // exactly the steps of an uninterrupted one.
 #pragma once
 
+#include "protocols/checkpoint.hpp"
 #include "protocols/registry.hpp"
 
 #include <chrono>
@@ -30,21 +31,6 @@ class Stepper {
   /// Short status for the progress line (mode, step size) and the accepted step count.
   virtual std::string status() const = 0;
   virtual long steps() const = 0;
-};
-
-/// Everything needed to continue a run.
-struct Checkpoint {
-  int cycle = 1;              ///< 1-based
-  int stage = 0;              ///< index of the stage in the cycle
-  bool in_stage = false;      ///< false: taken before the stage began
-  double stage_t_begin = 0;
-  State stage_begin;          ///< the state when the stage began (in_stage only)
-  std::string rng_at_stage_begin;
-  bool contact_at_stage_begin = true;
-  Apparatus apparatus;
-  State state;
-  std::vector<double> stepper;
-  double next_frame_t = 0;
 };
 
 class RunSink {

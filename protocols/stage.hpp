@@ -7,6 +7,7 @@
 // other through the Apparatus (the roll stage leaves the roll's axis and radius for compress).
 #pragma once
 
+#include "protocols/apparatus.hpp"
 #include "sim/model/sheet_model.hpp"
 
 #include <functional>
@@ -24,15 +25,6 @@ struct SheetInfo {
   double h_eff = 0;   ///< effective thickness sqrt(8 kb/ks)
   double ks = 0, kb = 0, mass = 0;
   double spacing = 0; ///< mean edge length
-};
-
-/// Geometry handed between the stages of one cycle.
-struct Apparatus {
-  bool rolled = false;
-  Vec3 axis_point = Vec3::Zero();
-  Vec3 axis_dir = Vec3::UnitZ();
-  double radius = 0;   ///< roll radius
-  double height = 0;   ///< extent of the rolled sheet along its axis (H0 of the experiment)
 };
 
 struct StageContext {

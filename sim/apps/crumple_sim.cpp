@@ -71,8 +71,10 @@ void validate_protocol(const Params& p, const StageRegistry& registry) {
 }
 
 /// The configuration of this process: the command line's, checked against the checkpoint's
-/// when resuming (resume.hpp); `rec` receives the checkpointed record, if any.
-Params load_run(const Options& o, const std::string& tmp, RunRecord& rec) {
+/// when resuming (resume.hpp); `rec` receives the checkpointed record and `resume` its
+/// checkpoint, if any.
+Params load_run(const Options& o, const std::string& tmp, RunRecord& rec,
+                std::optional<Checkpoint>& resume) {
   namespace fs = std::filesystem;
   Params given = load_config(o.config, o.sets);
   if (o.seed) {
@@ -88,9 +90,9 @@ Params load_run(const Options& o, const std::string& tmp, RunRecord& rec) {
   rec = read_run_file(tmp);
   const Params stored = load_stored_config(rec.config, tmp + ":/config");
   const std::vector<std::string> changes = resume_changes(stored, given, tmp);
-  validate_checkpoint(rec, given, tmp);
+  resume = checkpoint_to_resume(rec, given, tmp);
   ResumeRecord r;
-  r.t = rec.checkpoint->state.t;
+  r.t = resume->state.t;
   r.time = utc_now();
   r.threads = o.threads > 0 ? o.threads : omp_get_max_threads();
   r.changes = changes;
@@ -108,7 +110,8 @@ Params load_run(const Options& o, const std::string& tmp, RunRecord& rec) {
 /// printed resolved with every default; nothing is written.
 int print_config(const Options& o) {
   RunRecord rec;
-  const Params p = load_run(o, "", rec);
+  std::optional<Checkpoint> resume;
+  const Params p = load_run(o, "", rec, resume);
   validate_protocol(p, StageRegistry::builtin());
   std::printf("%s", resolved_yaml(p).c_str());
   return kExitOk;
@@ -158,13 +161,14 @@ int run(const Options& o) {
   if (o.print_config) return print_config(o);
   const std::string tmp = o.output + ".tmp";
   RunRecord rec;
-  const Params p = load_run(o, tmp, rec);
+  std::optional<Checkpoint> resume_from;
+  const Params p = load_run(o, tmp, rec, resume_from);
   const auto& registry = StageRegistry::builtin();
   validate_protocol(p, registry);
   const OutputPaths paths = check_output_paths(o.output, p.output.xdmf, o.resume, o.force);
 
   if (o.threads > 0) omp_set_num_threads(o.threads);
-  if (!rec.checkpoint) {
+  if (!resume_from) {
     rec = RunRecord{};
     rec.mesh = generate_mesh(p.mesh);
     rec.config = resolved_yaml(p);
@@ -187,7 +191,6 @@ int run(const Options& o) {
   // The sink also records the contact term's costs (/log@contact_*) for benchmarks.
   FileSink sink(rec, tmp, integ, contact ? contact->pairs.get() : nullptr);
   State s = run.model().rest_state();
-  const std::optional<Checkpoint> resume_from = rec.checkpoint;
   const bool complete = run.run(s, sink, resume_from ? &*resume_from : nullptr);
 
   rec.meta.end_time = utc_now();

@@ -76,9 +76,9 @@ std::vector<std::string> resume_changes(const Params& stored, const Params& give
   return changes;
 }
 
-void validate_checkpoint(const RunRecord& rec, const Params& p, const std::string& tmp) {
+Checkpoint checkpoint_to_resume(const RunRecord& rec, const Params& p, const std::string& tmp) {
   if (!rec.checkpoint) throw InputError(tmp + ": /checkpoint: missing (not a resumable run file)");
-  const Checkpoint& c = *rec.checkpoint;
+  const Checkpoint c = load_checkpoint(*rec.checkpoint);
   const auto fail = [&](const std::string& what) { throw InputError(tmp + ": " + what); };
   if (c.cycle > p.protocol.cycles + 1)
     fail("/checkpoint@cycle: " + std::to_string(c.cycle) + " beyond the protocol's " +
@@ -101,6 +101,7 @@ void validate_checkpoint(const RunRecord& rec, const Params& p, const std::strin
   if (h.mode != IntegrationMode::Implicit && h.mode != IntegrationMode::Explicit)
     fail("/checkpoint/stepper: unknown integration mode");
   if (!(h.h > 0) || !std::isfinite(h.h)) fail("/checkpoint/stepper: step size not positive");
+  return c;
 }
 
 }  // namespace crumple

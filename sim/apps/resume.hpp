@@ -5,6 +5,7 @@
 // Those are applied from the checkpoint on and recorded in /resumes.
 #pragma once
 
+#include "protocols/checkpoint.hpp"
 #include "sim/io/params.hpp"
 #include "sim/io/run_file.hpp"
 
@@ -19,8 +20,9 @@ namespace crumple {
 std::vector<std::string> resume_changes(const Params& stored, const Params& given,
                                         const std::string& tmp);
 
-/// Checks the stored checkpoint against the protocol of `p` (cycle and stage in range) and its
-/// integrator history against the mesh (vector lengths); InputError naming `tmp` and the dataset.
-void validate_checkpoint(const RunRecord& rec, const Params& p, const std::string& tmp);
+/// The stored checkpoint, checked against the protocol of `p` (cycle and stage in range) and
+/// its integrator history against the mesh (vector lengths); InputError naming `tmp` and the
+/// entry at fault.
+Checkpoint checkpoint_to_resume(const RunRecord& rec, const Params& p, const std::string& tmp);
 
 }  // namespace crumple

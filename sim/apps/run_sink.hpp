@@ -4,6 +4,7 @@
 // costs of contact handling and of its own writing (RunCosts).
 #pragma once
 
+#include "protocols/runner.hpp"
 #include "sim/contact/contact_term.hpp"
 #include "sim/integrate/integrator.hpp"
 #include "sim/io/run_file.hpp"
@@ -55,7 +56,7 @@ class FileSink : public RunSink {
   void checkpoint(const Checkpoint& c) override {
     const auto t0 = Clock::now();
     flush_log();
-    rec_.checkpoint = c;
+    rec_.checkpoint = save_restart(c);
     write_run_file_atomic(path_, rec_);
     output_s_ += since(t0);
   }

@@ -1,6 +1,7 @@
 // The HDF5 run file and its XDMF sidecar (run_file.hpp, docs/FILE_FORMAT.md).
 #include "sim/io/run_file.hpp"
 
+#include "sim/core/errors.hpp"
 #include "sim/io/h5.hpp"
 
 #include <cerrno>
@@ -123,53 +124,44 @@ Mesh read_mesh(const H5::Group& root, const Checker& check) {
   }
 }
 
-void write_checkpoint(H5::Group& root, const Checkpoint& c) {
-  H5::Group g = h5::group(root, "checkpoint");
-  H5::Group st = h5::group(g, "state");
-  write_state(st, c.state);
-  if (c.in_stage) {
-    H5::Group sb = h5::group(g, "stage_begin");
-    write_state(sb, c.stage_begin);
+// A restart block (sim/model/restart_data.hpp) as the group `name`: numbers and texts as
+// attributes, arrays as datasets, states as groups. Whose entries they are is not the file's
+// concern; reading takes each attribute by its HDF5 type class.
+void write_restart(H5::Group& root, const std::string& name, const RestartData& d) {
+  H5::Group g = h5::group(root, name);
+  for (const auto& [k, v] : d.ints) h5::attr(g, k, v);
+  for (const auto& [k, v] : d.reals) h5::attr(g, k, v);
+  for (const auto& [k, v] : d.texts) h5::attr(g, k, v);
+  for (const auto& [k, v] : d.arrays) h5::write(g, k, v);
+  for (const auto& [k, v] : d.states) {
+    H5::Group sg = h5::group(g, k);
+    write_state(sg, v);
   }
-  h5::write(g, "stepper", c.stepper);
-  h5::attr(g, "cycle", std::int64_t{c.cycle});
-  h5::attr(g, "stage", std::int64_t{c.stage});
-  h5::attr(g, "in_stage", std::int64_t{c.in_stage});
-  h5::attr(g, "stage_t_begin", c.stage_t_begin);
-  h5::attr(g, "rng_at_stage_begin", c.rng_at_stage_begin);
-  h5::attr(g, "contact_at_stage_begin", std::int64_t{c.contact_at_stage_begin});
-  h5::attr(g, "next_frame_t", c.next_frame_t);
-  const Apparatus& a = c.apparatus;
-  h5::attr(g, "rolled", std::int64_t{a.rolled});
-  h5::write(g, "axis", std::vector<double>{a.axis_point.x(), a.axis_point.y(), a.axis_point.z(),
-                                           a.axis_dir.x(), a.axis_dir.y(), a.axis_dir.z(),
-                                           a.radius, a.height});
 }
 
-Checkpoint read_checkpoint(const H5::Group& root, const Checker& check, Index n, Index m) {
-  H5::Group g = root.openGroup("checkpoint");
-  Checkpoint c;
-  c.state = read_state(g.openGroup("state"), "/checkpoint/state", check, n, m);
-  c.in_stage = h5::attr_int(g, "in_stage") != 0;
-  if (c.in_stage)
-    c.stage_begin = read_state(g.openGroup("stage_begin"), "/checkpoint/stage_begin", check, n, m);
-  c.stepper = h5::read_doubles(g, "stepper");
-  c.cycle = static_cast<int>(h5::attr_int(g, "cycle"));
-  c.stage = static_cast<int>(h5::attr_int(g, "stage"));
-  c.stage_t_begin = h5::attr_double(g, "stage_t_begin");
-  c.rng_at_stage_begin = h5::attr_string(g, "rng_at_stage_begin");
-  c.contact_at_stage_begin = h5::attr_int(g, "contact_at_stage_begin") != 0;
-  c.next_frame_t = h5::attr_double(g, "next_frame_t");
-  c.apparatus.rolled = h5::attr_int(g, "rolled") != 0;
-  const auto a = h5::read_doubles(g, "axis");
-  if (a.size() != 8) check.fail("/checkpoint/axis", "expected 8 values");
-  if (c.cycle < 1) check.fail("/checkpoint@cycle", "must be >= 1");
-  if (c.stage < 0) check.fail("/checkpoint@stage", "must be >= 0");
-  c.apparatus.axis_point = Vec3(a.at(0), a.at(1), a.at(2));
-  c.apparatus.axis_dir = Vec3(a.at(3), a.at(4), a.at(5));
-  c.apparatus.radius = a.at(6);
-  c.apparatus.height = a.at(7);
-  return c;
+RestartData read_restart(const H5::Group& root, const std::string& name, const Checker& check,
+                         Index n, Index m) {
+  H5::Group g = root.openGroup(name);
+  const std::string at = "/" + name;
+  RestartData d;
+  d.origin = check.file + ": " + at;
+  for (int k = 0; k < g.getNumAttrs(); ++k) {
+    const H5::Attribute a = g.openAttribute(static_cast<unsigned>(k));
+    const std::string key = a.getName();
+    switch (a.getTypeClass()) {
+      case H5T_INTEGER: d.ints[key] = h5::attr_int(g, key); break;
+      case H5T_FLOAT: d.reals[key] = h5::attr_double(g, key); break;
+      case H5T_STRING: d.texts[key] = h5::attr_string(g, key); break;
+      default: check.fail(at + "@" + key, "neither a number nor a text");
+    }
+  }
+  for (const auto& key : h5::members(g)) {
+    if (g.childObjType(key) == H5O_TYPE_GROUP)
+      d.states[key] = read_state(g.openGroup(key), at + "/" + key, check, n, m);
+    else
+      d.arrays[key] = h5::read_doubles(g, key);
+  }
+  return d;
 }
 
 // The integrator's counters as attributes of /log, one name per field.
@@ -388,7 +380,7 @@ void write_all(H5::H5File& file, const RunRecord& r) {
   h5::write(log, "e_kinetic", log_column(r.log, [](const LogRow& x) { return x.e_kinetic; }));
   if (r.summary) write_summary(log, *r.summary);
   if (r.costs) write_costs(log, *r.costs);
-  if (r.checkpoint) write_checkpoint(root, *r.checkpoint);
+  if (r.checkpoint) write_restart(root, "checkpoint", *r.checkpoint);
   H5::Group resumes = h5::group(root, "resumes");
   for (std::size_t k = 0; k < r.resumes.size(); ++k) {
     const ResumeRecord& e = r.resumes[k];
@@ -496,7 +488,7 @@ RunRecord read_run_file(const std::string& path) {
     }
     r.summary = read_summary(log);
     r.costs = read_costs(log);
-    if (h5::exists(root, "checkpoint")) r.checkpoint = read_checkpoint(root, check, n, m);
+    if (h5::exists(root, "checkpoint")) r.checkpoint = read_restart(root, "checkpoint", check, n, m);
     if (h5::exists(root, "resumes")) {  // files written before resumes were recorded lack it
       H5::Group resumes = root.openGroup("resumes");
       for (const auto& name : h5::members(resumes)) {

@@ -4,9 +4,9 @@
 // and never a file under the final name.
 #pragma once
 
-#include "protocols/runner.hpp"
 #include "sim/integrate/step_log.hpp"
 #include "sim/mesh/mesh.hpp"
+#include "sim/model/restart_data.hpp"
 
 #include <limits>
 #include <optional>
@@ -88,7 +88,9 @@ struct RunRecord {
   /// written before they were stored.
   std::optional<IntegratorSummary> summary;
   std::optional<RunCosts> costs;  ///< absent in files written before they were stored
-  std::optional<Checkpoint> checkpoint;
+  /// The restart entries of an unfinished run (/checkpoint), as the parts that own them wrote
+  /// them (protocols/checkpoint.hpp); the file only checks each state against the mesh.
+  std::optional<RestartData> checkpoint;
   std::vector<ResumeRecord> resumes;  ///< absent (empty) in older files and unresumed runs
 };
 

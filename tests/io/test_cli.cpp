@@ -108,15 +108,15 @@ int interrupt_run(const fs::path& cfg, const fs::path& out, int signo) {
 // The resumed run `b` took exactly the steps of the uninterrupted `a`.
 void expect_same_run(const RunRecord& a, const RunRecord& b) {
   ASSERT_TRUE(a.checkpoint && b.checkpoint);
-  EXPECT_EQ(a.checkpoint->state.t, b.checkpoint->state.t);
-  EXPECT_EQ(a.checkpoint->state.x, b.checkpoint->state.x);
-  EXPECT_EQ(a.checkpoint->state.p, b.checkpoint->state.p);
+  EXPECT_EQ(a.checkpoint->state("state").t, b.checkpoint->state("state").t);
+  EXPECT_EQ(a.checkpoint->state("state").x, b.checkpoint->state("state").x);
+  EXPECT_EQ(a.checkpoint->state("state").p, b.checkpoint->state("state").p);
   EXPECT_EQ(a.frames.size(), b.frames.size());
   EXPECT_EQ(b.meta.status, "complete");
   // The step log: one row per accepted step up to the end, the same rows with and without the
   // interruption.
   ASSERT_FALSE(a.log.empty());
-  EXPECT_EQ(a.log.back().t, a.checkpoint->state.t);
+  EXPECT_EQ(a.log.back().t, a.checkpoint->state("state").t);
   ASSERT_EQ(a.log.size(), b.log.size());
   // The run summary covers the whole run, across the interruption too (wall times aside).
   ASSERT_TRUE(a.summary && b.summary);

@@ -2,6 +2,7 @@
 // checkpoint; the compaction recorded per stage end and per cycle (and by the sink); older files
 // without the logged average, the stage walls, the costs or the compaction; write failures; bad
 // files.
+#include "protocols/stage.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/io/h5.hpp"
 #include "sim/apps/run_sink.hpp"
@@ -49,13 +50,14 @@ TEST(RunFile, RoundTripIsExact) {
   sum.wall_linear = 0.25;
   r.summary = sum;
   r.costs = RunCosts{1.5, 2.25, 9876543210L, 0.125};
-  Checkpoint ck;
-  ck.cycle = 2, ck.stage = 1, ck.in_stage = true, ck.stage_t_begin = 1.25;
-  ck.state = r.frames[1].state;
-  ck.stage_begin = r.frames[0].state;
-  ck.rng_at_stage_begin = "1 2 3";
-  ck.stepper = {1, 2, 3.5};
-  ck.apparatus.rolled = true, ck.apparatus.radius = 0.0177, ck.apparatus.axis_dir = Vec3(0, 1, 0);
+  // The run file stores restart entries of every kind without knowing whose they are.
+  RestartData ck;
+  ck.ints["cycle"] = 2;
+  ck.reals["stage_t_begin"] = 1.25;
+  ck.texts["rng_at_stage_begin"] = "1 2 3";
+  ck.arrays["stepper"] = {1, 2, 3.5};
+  ck.states["state"] = r.frames[1].state;
+  ck.states["stage_begin"] = r.frames[0].state;
   r.checkpoint = ck;
 
   const std::string path = crumple::testing::scratch_path("roundtrip.h5").string();
@@ -105,10 +107,24 @@ TEST(RunFile, RoundTripIsExact) {
   EXPECT_EQ(q.costs->contact_searches, 9876543210L);
   EXPECT_EQ(q.costs->output_s, 0.125);
   ASSERT_TRUE(q.checkpoint.has_value());
-  EXPECT_EQ(q.checkpoint->stage_begin.x, ck.stage_begin.x);
-  EXPECT_EQ(q.checkpoint->stepper, ck.stepper);
-  EXPECT_EQ(q.checkpoint->apparatus.radius, 0.0177);
-  EXPECT_EQ(q.checkpoint->rng_at_stage_begin, "1 2 3");
+  EXPECT_EQ(q.checkpoint->state("stage_begin").x, r.frames[0].state.x);
+  EXPECT_EQ(q.checkpoint->state("state").t, r.frames[1].state.t);
+  EXPECT_EQ(q.checkpoint->array("stepper"), ck.arrays["stepper"]);
+  EXPECT_EQ(q.checkpoint->integer("cycle"), 2);
+  EXPECT_EQ(q.checkpoint->real("stage_t_begin"), 1.25);
+  EXPECT_EQ(q.checkpoint->text("rng_at_stage_begin"), "1 2 3");
+  EXPECT_EQ(q.checkpoint->ints.size(), 1u);  // nothing added, nothing lost
+  EXPECT_EQ(q.checkpoint->reals.size(), 1u);
+  EXPECT_EQ(q.checkpoint->texts.size(), 1u);
+  EXPECT_EQ(q.checkpoint->arrays.size(), 1u);
+  EXPECT_EQ(q.checkpoint->states.size(), 2u);
+  // A missing entry names the file and the entry.
+  try {
+    (void)q.checkpoint->integer("stage");
+    FAIL() << "a missing entry must throw";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": /checkpoint@stage: missing");
+  }
 }
 
 // The cycle's compaction is the strongest (smallest) that a stage of that cycle reported; NaN
