@@ -148,10 +148,8 @@ void add_sample(RunStats& total, const RunStats& one) {
   total.sites = one.sites;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // lines show up at once when piped to a file
+/// The command line.
+struct Options {
   int nodes = 3000, threads = 2;
   std::vector<double> starts{1.0};
   double dt = 1.0, mass_scale = 1.0, force = 0.0, explicit_span = 0.0;
@@ -160,239 +158,329 @@ int main(int argc, char** argv) {
   SheetChoice sheet;
   bool with_contact = true, progress = false, require_warm = false;
   std::string which = "all", warm_path, end_path;
-  CLI::App app{"bench_radial: radial confinement, explicit-only against the hybrid integrator"};
-  app.add_option("--nodes", nodes, "mesh nodes")->check(CLI::Range(50, 10000000));
-  app.add_option("--t0", starts, "start(s) of the timed intervals (s), e.g. --t0 1 3; the warm-up "
-                 "runs on from one start to the next")
+  /// The timed hybrids keep the default CG tolerances (the warm-up's integrator).
+  bool default_tolerances() const {
+    return cg_tol == IntegratorSettings{}.cg_tol && cg_tol_max == IntegratorSettings{}.cg_tol_max;
+  }
+};
+
+void add_options(CLI::App& app, Options& o) {
+  app.add_option("--nodes", o.nodes, "mesh nodes")->check(CLI::Range(50, 10000000));
+  app.add_option("--t0", o.starts, "start(s) of the timed intervals (s), e.g. --t0 1 3; the "
+                 "warm-up runs on from one start to the next")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--dt", dt, "length of each timed interval (s)")->check(CLI::PositiveNumber);
-  app.add_option("--threads", threads, "OpenMP threads")->check(CLI::Range(1, 1024));
-  app.add_option("--mass-scale", mass_scale, "node mass / physical mass")->check(CLI::PositiveNumber);
-  add_sheet_options(app, sheet);
-  app.add_option("--force", force, "confining force per node in ks h_eff (0: the stage's default)")
+  app.add_option("--dt", o.dt, "length of each timed interval (s)")->check(CLI::PositiveNumber);
+  app.add_option("--threads", o.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
+  app.add_option("--mass-scale", o.mass_scale, "node mass / physical mass")
+      ->check(CLI::PositiveNumber);
+  add_sheet_options(app, o.sheet);
+  app.add_option("--force", o.force, "confining force per node in ks h_eff (0: the stage's "
+                 "default)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--contact", with_contact, "self-contact (1) or phantom sheet (0)");
-  app.add_option("--variants", which, "all, short (explicit only, block Jacobi 18 and two-level), "
-                 "block-jacobi (explicit only and block Jacobi 18), hybrid (block Jacobi 18 and "
-                 "two-level) or explicit (explicit only)")
+  app.add_option("--contact", o.with_contact, "self-contact (1) or phantom sheet (0)");
+  app.add_option("--variants", o.which, "all, short (explicit only, block Jacobi 18 and "
+                 "two-level), block-jacobi (explicit only and block Jacobi 18), hybrid (block "
+                 "Jacobi 18 and two-level) or explicit (explicit only)")
       ->check(CLI::IsMember({"all", "short", "block-jacobi", "hybrid", "explicit"}));
-  app.add_option("--cg-tol", cg_tol, "CG relative residual of a step's first Newton iteration "
+  app.add_option("--cg-tol", o.cg_tol, "CG relative residual of a step's first Newton iteration "
                  "(timed hybrid variants)")
       ->check(CLI::Range(1e-12, 1.0));
-  app.add_option("--cg-tol-max", cg_tol_max, "loosest, for later Newton iterations; = --cg-tol: "
-                 "a fixed tolerance")
+  app.add_option("--cg-tol-max", o.cg_tol_max, "loosest, for later Newton iterations; = "
+                 "--cg-tol: a fixed tolerance")
       ->check(CLI::Range(1e-12, 1.0));
-  app.add_option("--explicit-span", explicit_span,
+  app.add_option("--explicit-span", o.explicit_span,
                  "time the explicit-only variant on [t0, t0 + span] and scale to dt (0: all of dt)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--explicit-samples", samples,
+  app.add_option("--explicit-samples", o.samples,
                  "time explicit-only over this many spans of --explicit-span spread evenly over "
                  "the interval, each from the state the first hybrid variant reached there and "
                  "timed when it got there, and scale their mean rate to dt")
       ->check(CLI::Range(1, 1000));
-  app.add_option("--warm-state", warm_path,
+  app.add_option("--warm-state", o.warm_path,
                  "HDF5 file of the warm state at the first t0: read if it holds this mesh and "
                  "setup at t0 (the warm-up is skipped) or before (the warm-up goes on from it), "
                  "written after a warm-up");
-  app.add_option("--save-end", end_path,
+  app.add_option("--save-end", o.end_path,
                  "HDF5 file for the state at the end of the (last) interval from the block-Jacobi "
                  "18 hybrid at the default tolerances: a later --warm-state FILE --t0 T > that "
                  "time warms up from it");
-  app.add_flag("--require-warm", require_warm, "fail unless --warm-state holds the state at the "
-               "first t0 (never warm up: a chain of runs must not fall back to a warm-up from rest)");
-  app.add_flag("--progress", progress, "print a line per tenth of each timed interval too (the "
+  app.add_flag("--require-warm", o.require_warm, "fail unless --warm-state holds the state at "
+               "the first t0 (never warm up: a chain of runs must not fall back to a warm-up "
+               "from rest)");
+  app.add_flag("--progress", o.progress, "print a line per tenth of each timed interval too (the "
                "warm-up always does)");
-  CLI11_PARSE(app, argc, argv);
-  if (cg_tol > cg_tol_max) {
-    std::fprintf(stderr, "bench_radial: --cg-tol %g exceeds --cg-tol-max %g\n", cg_tol, cg_tol_max);
-    return 2;
+}
+
+/// False (after a message) when the options contradict one another.
+bool options_consistent(const Options& o) {
+  if (o.cg_tol > o.cg_tol_max) {
+    std::fprintf(stderr, "bench_radial: --cg-tol %g exceeds --cg-tol-max %g\n", o.cg_tol,
+                 o.cg_tol_max);
+    return false;
   }
-  if (samples > 1 && (explicit_span <= 0 || which == "hybrid" || which == "explicit")) {
+  if (o.samples > 1 && (o.explicit_span <= 0 || o.which == "hybrid" || o.which == "explicit")) {
     std::fprintf(stderr, "bench_radial: --explicit-samples needs --explicit-span > 0 and both the "
                  "explicit-only and a hybrid variant (--variants all, short or block-jacobi)\n");
-    return 2;
+    return false;
   }
-  std::sort(starts.begin(), starts.end());
-  omp_set_num_threads(threads);
-  const RadialSheet su = make_radial_sheet(nodes, mass_scale, sheet);
-  State s = SheetModel(su.mesh, su.params).rest_state();
-  std::printf("radial confinement, %d nodes (mesh seed %llu), %d threads, h_eff %g mm, mass scale "
-              "%g, force %s, %s\n",
-              su.mesh.num_nodes(), static_cast<unsigned long long>(sheet.mesh_seed),
-              omp_get_max_threads(), sheet.thickness_mm, mass_scale,
-              force > 0 ? (std::to_string(force) + " ks h_eff").c_str() : "the stage's default",
-              with_contact ? "self-contact" : "phantom sheet");
-  struct Variant {
-    const char* name;
-    const char* solver;
-    int block;
-    bool explicit_only;
-  };
+  return true;
+}
+
+struct Variant {
+  const char* name;
+  const char* solver;
+  int block;
+  bool explicit_only;
+};
+
+/// The variants of --variants, in the order they are timed.
+std::vector<Variant> variants_for(const Options& o) {
   std::vector<Variant> variants{{"explicit only (RK4(3))", "cg", 18, true},
                                 {"hybrid, CG + block Jacobi 18", "block_jacobi", 18, false},
                                 {"hybrid, CG + two-level (18, 32)", "two_level", 18, false}};
   // Sampled explicit-only starts from states of the first hybrid's trajectory and is timed while
   // that hybrid runs; it is reported right after it, so a long run that is stopped during a later
   // variant still has the ratio.
-  if (which == "hybrid" || samples > 1) variants.erase(variants.begin());
-  if (which == "explicit") variants.resize(1);
-  if (which == "block-jacobi") variants.pop_back();
-  if (which == "all")
-    for (const Variant& v : {Variant{"hybrid, CG + block Jacobi 144", "block_jacobi", 144, false},
-                             Variant{"hybrid, CG, no preconditioner", "cg", 18, false},
-                             Variant{"hybrid, CG + incomplete Cholesky", "incomplete_cholesky", 18, false},
-                             Variant{"hybrid, direct LDLT", "ldlt", 18, false}})
+  if (o.which == "hybrid" || o.samples > 1) variants.erase(variants.begin());
+  if (o.which == "explicit") variants.resize(1);
+  if (o.which == "block-jacobi") variants.pop_back();
+  if (o.which == "all")
+    for (const Variant& v :
+         {Variant{"hybrid, CG + block Jacobi 144", "block_jacobi", 144, false},
+          Variant{"hybrid, CG, no preconditioner", "cg", 18, false},
+          Variant{"hybrid, CG + incomplete Cholesky", "incomplete_cholesky", 18, false},
+          Variant{"hybrid, direct LDLT", "ldlt", 18, false}})
       variants.push_back(v);
-  if (samples > 1)
+  if (o.samples > 1)
     variants.insert(variants.begin() + 1, {"explicit only (RK4(3))", "cg", 18, true});
-  const std::string setup = warm_description(su, force, with_contact);
-  for (const double t0 : starts) {
-    const bool keep = t0 == starts.front() && !warm_path.empty();
-    auto w = keep ? load_warm_state(warm_path, su.mesh.num_nodes(), t0, setup, true) : std::nullopt;
-    if (require_warm && t0 == starts.front() && !(w && w->t == t0)) {
-      std::fprintf(stderr, "bench_radial: --require-warm: %s does not hold this setup's state at "
-                   "t0 = %g s\n", warm_path.empty() ? "(no --warm-state)" : warm_path.c_str(), t0);
-      return 2;
+  return variants;
+}
+
+/// Brings `s` to t0: from the warm state file when it holds this setup at t0, else by a warm-up
+/// (from the file's earlier state, or from where `s` is). False (after a message) when
+/// --require-warm finds no warm state at the first t0.
+bool reach_start(const RadialSheet& su, const Options& o, const std::string& setup, double t0,
+                 State& s) {
+  const bool first = t0 == o.starts.front();
+  const bool keep = first && !o.warm_path.empty();
+  auto w = keep ? load_warm_state(o.warm_path, su.mesh.num_nodes(), t0, setup, true)
+                : std::nullopt;
+  if (o.require_warm && first && !(w && w->t == t0)) {
+    std::fprintf(stderr, "bench_radial: --require-warm: %s does not hold this setup's state at "
+                 "t0 = %g s\n", o.warm_path.empty() ? "(no --warm-state)" : o.warm_path.c_str(),
+                 t0);
+    return false;
+  }
+  if (w && w->t < t0) {
+    // An earlier state of the same setup (e.g. a previous run's --save-end): warm up from it.
+    std::printf("warm state at t = %g s read from %s\n", w->t, o.warm_path.c_str());
+    s = std::move(*w);
+    w.reset();
+  }
+  if (w) {
+    s = std::move(*w);
+    std::printf("warm state at t0 = %g s read from %s\ninterval [%g s, %g s]:\n", t0,
+                o.warm_path.c_str(), t0, t0 + o.dt);
+    return true;
+  }
+  std::printf("warm-up (hybrid, block Jacobi 18) from t = %g s to t0 = %g s ...\n", s.t, t0);
+  // The warm state file follows the warm-up every 5 ms of simulated time (in at least ten
+  // chunks; one integrator throughout): an interrupted warm-up resumes from the last chunk
+  // reached (with a fresh integrator there). At 12000 nodes in dense contact a tenth of a
+  // warm-up over [2, 3] is more than half an hour of wall time.
+  const auto save = [&](const State& x) {
+    if (keep && x.t > 0) save_warm_state(o.warm_path, x, su.mesh.num_nodes(), setup);
+  };
+  const int chunks = std::max(10, static_cast<int>(std::ceil((t0 - s.t) / 0.005)));
+  const double warm = integrate(su, settings_for("block_jacobi", 18, false), s, t0, nullptr,
+                                o.with_contact, o.force, true, chunks, save);
+  if (keep) save_warm_state(o.warm_path, s, su.mesh.num_nodes(), setup);
+  std::printf("  (%.1f s wall)\ninterval [%g s, %g s]:\n", warm, t0, t0 + o.dt);
+  return true;
+}
+
+/// One timed interval [t0, t0 + dt]: every variant from the same start state, and the
+/// explicit-only samples (--explicit-samples) taken along the first hybrid.
+class Interval {
+ public:
+  Interval(const RadialSheet& su, const Options& o, const std::string& setup, const State& start,
+           double t0)
+      : su_(su), o_(o), setup_(setup), start_(start), t0_(t0),
+        explicit_run_(o.explicit_span > 0 ? std::min(o.explicit_span, o.dt) : o.dt),
+        explicit_st_(settings_for("cg", 18, true, o.cg_tol, o.cg_tol_max)),
+        samples_due_(o.samples > 1) {}
+
+  /// Times `v` and prints its row and its breakdown; a variant that fails prints why.
+  void time(const Variant& v) {
+    RunStats rs;
+    const double span = v.explicit_only ? explicit_run_ : o_.dt;
+    const bool sampled = v.explicit_only && o_.samples > 1;
+    try {
+      const double measured = sampled ? from_samples(rs, span) : integrate_variant(v, rs, span);
+      const double covered = sampled ? span * double(taken_.size()) : span;
+      const double wall = measured * o_.dt / covered;
+      if (v.explicit_only) explicit_wall_ = wall;
+      else hybrid_walls_.emplace_back(v.name, wall);
+      print_row(v, rs, wall, measured, covered, span, sampled);
+    } catch (const std::exception& e) {
+      std::printf("%-34s failed: %s\n", v.name, e.what());
     }
-    if (w && w->t < t0) {
-      // An earlier state of the same setup (e.g. a previous run's --save-end): warm up from it.
-      std::printf("warm state at t = %g s read from %s\n", w->t, warm_path.c_str());
-      s = std::move(*w);
-      w.reset();
+  }
+
+  /// With --explicit-samples: each hybrid's speed-up against the sampled explicit-only rate.
+  void print_speedups() const {
+    if (o_.samples > 1 && explicit_wall_ > 0)
+      for (const auto& [name, wall] : hybrid_walls_)
+        std::printf("speed-up of %s against explicit-only: %.1fx\n", name, explicit_wall_ / wall);
+  }
+
+ private:
+  // --explicit-samples: explicit-only spans timed from the states the first hybrid reaches,
+  // each as soon as it reaches it. This VM's speed drifts by up to 2x over minutes: timed after
+  // the hybrid, the samples would see other conditions than the stretch they stand for.
+  struct Sample {
+    double t_from, t_to, wall;
+    RunStats stats;
+  };
+
+  /// The sampled explicit-only variant: the samples already taken, summed.
+  double from_samples(RunStats& rs, double span) const {
+    if (!sample_error_.empty() || taken_.empty())
+      throw std::runtime_error(
+          (taken_.empty() ? std::string("no sample taken") : sample_error_) + " (after " +
+          std::to_string(taken_.size()) + " of " + std::to_string(o_.samples) + " samples)");
+    double measured = 0;
+    for (const Sample& one : taken_) {
+      std::printf("    explicit-only sample [%.4g, %.4g]: %.1f s wall, %ld steps (%.1f s "
+                  "scaled to dt)\n", one.t_from, one.t_to, one.wall, one.stats.integ.steps(),
+                  one.wall * o_.dt / span);
+      measured += one.wall;
+      add_sample(rs, one.stats);
     }
-    if (w) {
-      s = std::move(*w);
-      std::printf("warm state at t0 = %g s read from %s\ninterval [%g s, %g s]:\n", t0,
-                  warm_path.c_str(), t0, t0 + dt);
-    } else {
-      std::printf("warm-up (hybrid, block Jacobi 18) from t = %g s to t0 = %g s ...\n", s.t, t0);
-      // The warm state file follows the warm-up every 5 ms of simulated time (in at least ten
-      // chunks; one integrator throughout): an interrupted warm-up resumes from the last chunk
-      // reached (with a fresh integrator there). At 12000 nodes in dense contact a tenth of a
-      // warm-up over [2, 3] is more than half an hour of wall time.
-      const auto save = [&](const State& x) {
-        if (keep && x.t > 0) save_warm_state(warm_path, x, su.mesh.num_nodes(), setup);
-      };
-      const int chunks = std::max(10, static_cast<int>(std::ceil((t0 - s.t) / 0.005)));
-      const double warm = integrate(su, settings_for("block_jacobi", 18, false), s, t0, nullptr,
-                                    with_contact, force, true, chunks, save);
-      if (keep) save_warm_state(warm_path, s, su.mesh.num_nodes(), setup);
-      std::printf("  (%.1f s wall)\ninterval [%g s, %g s]:\n", warm, t0, t0 + dt);
+    return measured;
+  }
+
+  /// An explicit-only span from `x` (a state of the first hybrid), timed now; a failure ends
+  /// the sampling, not the hybrid.
+  void take_sample(const State& x) {
+    if (!sample_error_.empty()) return;
+    Sample one{x.t, 0, 0, {}};
+    State y = x;
+    try {
+      one.wall = integrate(su_, explicit_st_, y, x.t + explicit_run_, &one.stats, o_.with_contact,
+                           o_.force);
+    } catch (const std::exception& e) {
+      sample_error_ = "sample from t = " + std::to_string(x.t) + " s: " + e.what();
+      return;
     }
+    one.t_to = y.t;
+    taken_.push_back(std::move(one));
+  }
+
+  /// Integrates `v` over [t0, t0 + span] from the start state; the first hybrid takes the
+  /// samples along (taken whatever its end) and may leave its end state for a later run.
+  double integrate_variant(const Variant& v, RunStats& rs, double span) {
+    const IntegratorSettings st =
+        settings_for(v.solver, v.block, v.explicit_only, o_.cg_tol, o_.cg_tol_max);
+    State w = start_;
+    const bool first_hybrid = !v.explicit_only && hybrid_walls_.empty();
+    double measured = 0;
+    if (!v.explicit_only && samples_due_) {
+      samples_due_ = false;
+      measured = integrate(su_, st, w, t0_ + span, &rs, o_.with_contact, o_.force, o_.progress,
+                           o_.samples, [this](const State& x) { take_sample(x); });
+    } else
+      measured = integrate(su_, st, w, t0_ + span, &rs, o_.with_contact, o_.force, o_.progress);
+    // Block Jacobi 18 with the default tolerances: the warm-up's integrator, so its end state
+    // can seed a later run's warm-up.
+    if (first_hybrid && !o_.end_path.empty() && v.block == 18 &&
+        std::string(v.solver) == "block_jacobi" && o_.default_tolerances()) {
+      save_warm_state(o_.end_path, w, su_.mesh.num_nodes(), setup_);
+      std::printf("    (state at t = %g s written to %s)\n", w.t, o_.end_path.c_str());
+    }
+    return measured;
+  }
+
+  void print_row(const Variant& v, const RunStats& rs, double wall, double measured,
+                 double covered, double span, bool sampled) const {
+    const IntegratorSummary& sum = rs.integ;
+    std::printf("%-34s %10.1f %8ld %8ld %10.2f %10.1f %8ld", v.name, wall, sum.steps(),
+                sum.steps_explicit, sum.mean_newton_per_step(), sum.mean_cg_per_newton(),
+                sum.rejections());
+    if (!v.explicit_only && explicit_wall_ > 0) std::printf(" %8.1fx", explicit_wall_ / wall);
+    if (sampled)
+      std::printf("   (scaled from %.1f s wall over %zu spans of %g s, each timed when the "
+                  "first hybrid reached its start)", measured, taken_.size(), span);
+    else if (span < o_.dt)
+      std::printf("   (scaled from %.1f s wall over [%g, %g])", measured, t0_, t0_ + span);
+    std::printf("\n");
+    // The raw totals, for summing the pieces of a chained run (radial_chain.sh).
+    std::printf("    totals: measured %.3f s over %g s, steps %ld, explicit %ld, switches %ld, "
+                "implicit attempts %ld, newton %ld, cg %ld, rejected %ld %ld %ld %ld, wall "
+                "implicit %.3f linear %.3f explicit %.3f\n",
+                measured, covered, sum.steps(), sum.steps_explicit, sum.switches,
+                sum.implicit_attempts, sum.newton_iters, sum.cg_iters, sum.rejected_error,
+                sum.rejected_newton, sum.rejected_not_spd, sum.rejected_other, sum.wall_implicit,
+                sum.wall_linear, sum.wall_explicit);
+    if (sum.rejections() > 0)
+      std::printf("    rejected attempts: error test %ld, Newton %ld, not SPD %ld, other %ld\n",
+                  sum.rejected_error, sum.rejected_newton, sum.rejected_not_spd,
+                  sum.rejected_other);
+    if (!v.explicit_only)
+      std::printf("    wall: implicit %.1f s (linear solves %.1f), explicit %.1f s; forces and "
+                  "Jacobians (both modes) %.1f s\n",
+                  sum.wall_implicit, sum.wall_linear, sum.wall_explicit, sum.wall_assembly);
+    if (o_.with_contact) {
+      const ContactStats& c = rs.contact;
+      std::printf("    %.3g ms per step; contact: detection %.1f%% (%zu searches, %.3g us per "
+                  "site and search, %zu sites), response %.1f%%\n",
+                  1e3 * measured / std::max<long>(1, sum.steps()),
+                  100 * c.search_seconds / measured, c.searches,
+                  c.searches ? 1e6 * c.search_seconds / (double(c.searches) * rs.sites) : 0.0,
+                  rs.sites, 100 * c.eval_seconds / measured);
+    }
+  }
+
+  const RadialSheet& su_;
+  const Options& o_;
+  const std::string& setup_;
+  const State& start_;
+  const double t0_, explicit_run_;
+  const IntegratorSettings explicit_st_;
+  double explicit_wall_ = 0;
+  std::vector<Sample> taken_;
+  std::string sample_error_;
+  bool samples_due_;  // taken along the first hybrid attempted, whatever its end
+  std::vector<std::pair<const char*, double>> hybrid_walls_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // lines show up at once when piped to a file
+  Options o;
+  CLI::App app{"bench_radial: radial confinement, explicit-only against the hybrid integrator"};
+  add_options(app, o);
+  CLI11_PARSE(app, argc, argv);
+  if (!options_consistent(o)) return 2;
+  std::sort(o.starts.begin(), o.starts.end());
+  omp_set_num_threads(o.threads);
+  const RadialSheet su = make_radial_sheet(o.nodes, o.mass_scale, o.sheet);
+  State s = SheetModel(su.mesh, su.params).rest_state();
+  std::printf("radial confinement, %d nodes (mesh seed %llu), %d threads, h_eff %g mm, mass scale "
+              "%g, force %s, %s\n",
+              su.mesh.num_nodes(), static_cast<unsigned long long>(o.sheet.mesh_seed),
+              omp_get_max_threads(), o.sheet.thickness_mm, o.mass_scale,
+              o.force > 0 ? (std::to_string(o.force) + " ks h_eff").c_str() : "the stage's default",
+              o.with_contact ? "self-contact" : "phantom sheet");
+  const std::vector<Variant> variants = variants_for(o);
+  const std::string setup = warm_description(su, o.force, o.with_contact);
+  for (const double t0 : o.starts) {
+    if (!reach_start(su, o, setup, t0, s)) return 2;
     std::printf("%-34s %10s %8s %8s %10s %10s %8s %9s\n", "variant", "wall [s]", "steps", "expl.",
                 "newton/st", "cg/newton", "rejects", "speed-up");
-    double explicit_wall = 0;
-    // --explicit-samples: explicit-only spans timed from the states the first hybrid reaches,
-    // each as soon as it reaches it. This VM's speed drifts by up to 2x over minutes: timed after
-    // the hybrid, the samples would see other conditions than the stretch they stand for.
-    struct Sample {
-      double t_from, t_to, wall;
-      RunStats stats;
-    };
-    std::vector<Sample> taken;
-    std::string sample_error;  // a sample that failed ends the sampling, not the hybrid
-    bool samples_due = samples > 1;  // taken along the first hybrid attempted, whatever its end
-    const double explicit_run = explicit_span > 0 ? std::min(explicit_span, dt) : dt;
-    const IntegratorSettings explicit_st = settings_for("cg", 18, true, cg_tol, cg_tol_max);
-    std::vector<std::pair<const char*, double>> hybrid_walls;
-    for (const Variant& v : variants) {
-      RunStats rs;
-      const double span = v.explicit_only ? explicit_run : dt;
-      const bool sampled = v.explicit_only && samples > 1;
-      try {
-        const IntegratorSettings st =
-            settings_for(v.solver, v.block, v.explicit_only, cg_tol, cg_tol_max);
-        double measured = 0;
-        if (sampled) {
-          if (!sample_error.empty() || taken.empty())
-            throw std::runtime_error(
-                (taken.empty() ? std::string("no sample taken") : sample_error) + " (after " +
-                std::to_string(taken.size()) + " of " + std::to_string(samples) + " samples)");
-          for (const Sample& one : taken) {
-            std::printf("    explicit-only sample [%.4g, %.4g]: %.1f s wall, %ld steps (%.1f s "
-                        "scaled to dt)\n", one.t_from, one.t_to, one.wall, one.stats.integ.steps(),
-                        one.wall * dt / span);
-            measured += one.wall;
-            add_sample(rs, one.stats);
-          }
-        } else {
-          State w = s;
-          const bool first_hybrid = !v.explicit_only && hybrid_walls.empty();
-          const auto take_sample = [&](const State& x) {
-            if (!sample_error.empty()) return;
-            Sample one{x.t, 0, 0, {}};
-            State y = x;
-            try {
-              one.wall = integrate(su, explicit_st, y, x.t + explicit_run, &one.stats,
-                                   with_contact, force);
-            } catch (const std::exception& e) {
-              sample_error = "sample from t = " + std::to_string(x.t) + " s: " + e.what();
-              return;
-            }
-            one.t_to = y.t;
-            taken.push_back(std::move(one));
-          };
-          if (!v.explicit_only && samples_due) {
-            samples_due = false;
-            measured = integrate(su, st, w, t0 + span, &rs, with_contact, force, progress, samples,
-                                 take_sample);
-          } else
-            measured = integrate(su, st, w, t0 + span, &rs, with_contact, force, progress);
-          // Block Jacobi 18 with the default tolerances: the warm-up's integrator, so its end
-          // state can seed a later run's warm-up.
-          if (first_hybrid && !end_path.empty() && v.block == 18 &&
-              std::string(v.solver) == "block_jacobi" && cg_tol == IntegratorSettings{}.cg_tol &&
-              cg_tol_max == IntegratorSettings{}.cg_tol_max) {
-            save_warm_state(end_path, w, su.mesh.num_nodes(), setup);
-            std::printf("    (state at t = %g s written to %s)\n", w.t, end_path.c_str());
-          }
-        }
-        const double covered = sampled ? span * double(taken.size()) : span;
-        const double wall = measured * dt / covered;
-        if (v.explicit_only) explicit_wall = wall;
-        else hybrid_walls.emplace_back(v.name, wall);
-        const IntegratorSummary& sum = rs.integ;
-        std::printf("%-34s %10.1f %8ld %8ld %10.2f %10.1f %8ld", v.name, wall, sum.steps(),
-                    sum.steps_explicit, sum.mean_newton_per_step(), sum.mean_cg_per_newton(),
-                    sum.rejections());
-        if (!v.explicit_only && explicit_wall > 0) std::printf(" %8.1fx", explicit_wall / wall);
-        if (sampled)
-          std::printf("   (scaled from %.1f s wall over %zu spans of %g s, each timed when the "
-                      "first hybrid reached its start)", measured, taken.size(), span);
-        else if (span < dt)
-          std::printf("   (scaled from %.1f s wall over [%g, %g])", measured, t0, t0 + span);
-        std::printf("\n");
-        // The raw totals, for summing the pieces of a chained run (radial_chain.sh).
-        std::printf("    totals: measured %.3f s over %g s, steps %ld, explicit %ld, switches %ld, "
-                    "implicit attempts %ld, newton %ld, cg %ld, rejected %ld %ld %ld %ld, wall "
-                    "implicit %.3f linear %.3f explicit %.3f\n",
-                    measured, covered, sum.steps(), sum.steps_explicit, sum.switches,
-                    sum.implicit_attempts, sum.newton_iters, sum.cg_iters, sum.rejected_error,
-                    sum.rejected_newton, sum.rejected_not_spd, sum.rejected_other,
-                    sum.wall_implicit, sum.wall_linear, sum.wall_explicit);
-        if (sum.rejections() > 0)
-          std::printf("    rejected attempts: error test %ld, Newton %ld, not SPD %ld, other %ld\n",
-                      sum.rejected_error, sum.rejected_newton, sum.rejected_not_spd,
-                      sum.rejected_other);
-        if (!v.explicit_only)
-          std::printf("    wall: implicit %.1f s (linear solves %.1f), explicit %.1f s; forces and "
-                      "Jacobians (both modes) %.1f s\n",
-                      sum.wall_implicit, sum.wall_linear, sum.wall_explicit, sum.wall_assembly);
-        if (with_contact) {
-          const ContactStats& c = rs.contact;
-          std::printf("    %.3g ms per step; contact: detection %.1f%% (%zu searches, %.3g us per "
-                      "site and search, %zu sites), response %.1f%%\n",
-                      1e3 * measured / std::max<long>(1, sum.steps()),
-                      100 * c.search_seconds / measured, c.searches,
-                      c.searches ? 1e6 * c.search_seconds / (double(c.searches) * rs.sites) : 0.0,
-                      rs.sites, 100 * c.eval_seconds / measured);
-        }
-      } catch (const std::exception& e) {
-        std::printf("%-34s failed: %s\n", v.name, e.what());
-      }
-    }
-    if (samples > 1 && explicit_wall > 0)
-      for (const auto& [name, wall] : hybrid_walls)
-        std::printf("speed-up of %s against explicit-only: %.1fx\n", name, explicit_wall / wall);
+    Interval interval(su, o, setup, s, t0);
+    for (const Variant& v : variants) interval.time(v);
+    interval.print_speedups();
   }
 }
