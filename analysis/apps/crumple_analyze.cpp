@@ -3,9 +3,11 @@
 //
 //   crumple-analyze RUN.h5 [-o DIR] [--threshold-c0 F | --threshold P] [--px-per-cm R] ...
 //   crumple-analyze ensemble -o ENSEMBLE.json DIR... (DIR: a run's output folder or its stats.json)
+//   crumple-analyze collapse -o COLLAPSE.json ENSEMBLE.json... (one ensemble per compaction ratio)
 //
 // Exit codes: 0 success, 2 bad input (arguments, run file, stats.json or output folder; nothing
 // is written), 1 anything else (an earlier output is then left as it was).
+#include "analysis/ensemble/collapse.hpp"
 #include "analysis/ensemble/ensemble.hpp"
 #include "analysis/io/run_reader.hpp"
 #include "analysis/run/analyze_run.hpp"
@@ -38,6 +40,29 @@ int run_ensemble(const std::vector<std::string>& inputs, const std::string& out_
     std::cout << "  log law on the increments of " << q << ": C = " << f["C"] << " +- "
               << f["sigma_C"] << ", n0 = " << f["n0"] << " +- " << f["sigma_n0"]
               << ", chi2/dof = " << f["chi2"] << "/" << f["dof"] << "\n";
+  }
+  return 0;
+}
+
+/// `crumple-analyze collapse`: reads the ensembles, writes collapse.json, prints the global fits.
+int run_collapse(const std::vector<std::string>& inputs, const std::string& out_path) {
+  using namespace crumple::analysis;
+  std::vector<EnsembleInput> ensembles;
+  for (const auto& p : inputs) ensembles.push_back(read_ensemble(p));
+  const EnsembleJson doc = collapse_json(ensembles);
+  write_ensemble(out_path, doc);
+  std::cout << "crumple-analyze collapse: " << ensembles.size() << " ensembles, compaction "
+            << doc["compactions"].dump() << " -> " << out_path << "\n";
+  for (const auto& note : doc["notes"]) std::cout << "  note: " << note.get<std::string>() << "\n";
+  for (const char* q : {"perimeter_P", "crease_length_L0"}) {
+    const auto& f = doc["fits"][q]["increments"];
+    std::cout << "  global law on the increments of " << q << ": ";
+    if (f.contains("error"))
+      std::cout << f["error"].get<std::string>() << "\n";
+    else
+      std::cout << "c1 = " << f["c1"] << " +- " << f["sigma_c1"] << ", c2 = " << f["c2"]
+                << " +- " << f["sigma_c2"] << ", chi2/dof = " << f["chi2"] << "/" << f["dof"]
+                << "\n";
   }
   return 0;
 }
@@ -96,17 +121,17 @@ int guarded(const char* who, Work work) {
   }
 }
 
-/// `crumple-analyze ensemble`: the per-run options mean nothing there, so they are refused
-/// rather than ignored.
-int ensemble_main(const CLI::App& app, const std::vector<std::string>& inputs,
-                  const std::string& out) {
+/// `crumple-analyze ensemble` and `collapse`: the per-run options mean nothing there, so they
+/// are refused rather than ignored.
+template <class Work>
+int subcommand_main(const CLI::App& app, const std::string& name, Work work) {
   for (const CLI::Option* o : app.get_options())
     if (o->count() > 0) {
-      std::cerr << "crumple-analyze ensemble: " << o->get_name()
-                << " is an option of the per-run analysis, not of the ensemble\n";
+      std::cerr << "crumple-analyze " << name << ": " << o->get_name()
+                << " is an option of the per-run analysis, not of the " << name << "\n";
       return 2;
     }
-  return guarded("crumple-analyze ensemble", [&] { return run_ensemble(inputs, out); });
+  return guarded(("crumple-analyze " + name).c_str(), work);
 }
 
 /// Per cycle: crease length, P, facets and a_fit; then the log-law fits.
@@ -172,6 +197,19 @@ int main(int argc, char** argv) {
       ->required();
   ens->footer("Exit codes: 0 done; 2 bad input (a missing or unreadable stats.json: nothing is "
               "written); 1 any other error.");
+  std::vector<std::string> col_inputs;
+  std::string col_out;
+  CLI::App* col = app.add_subcommand(
+      "collapse",
+      "the crease-length law l = c1 (1 - D) ln(1 + c2 n/D) fitted to several compaction ratios "
+      "at once (the collapse, docs/STATISTICS.md §2.3), from one ensemble document per ratio, "
+      "with each ratio's own fit and the collapsed points; written as JSON");
+  col->add_option("ensembles", col_inputs,
+                  "ensemble documents (`crumple-analyze ensemble` output), one per compaction")
+      ->required();
+  col->add_option("-o,--output", col_out, "collapse JSON file to write")->required();
+  col->footer("Exit codes: 0 done; 2 bad input (a missing or unreadable ensemble document, or one "
+              "without a single compaction ratio: nothing is written); 1 any other error.");
   app.add_option("-o,--output", out_dir,
                  "output folder (default: the run file's name with .h5 replaced by .analysis)");
   double absolute = 0.0;
@@ -182,7 +220,10 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
   }
-  if (ens->parsed()) return ensemble_main(app, ens_inputs, ens_out);
+  if (ens->parsed())
+    return subcommand_main(app, "ensemble", [&] { return run_ensemble(ens_inputs, ens_out); });
+  if (col->parsed())
+    return subcommand_main(app, "collapse", [&] { return run_collapse(col_inputs, col_out); });
   if (run_path.empty()) {
     std::cerr << app.help() << "crumple-analyze: the run file (RUN.h5) is required\n";
     return 2;

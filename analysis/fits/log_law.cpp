@@ -20,10 +20,17 @@
 namespace crumple::analysis {
 namespace {
 
+// The collapse over several compaction ratios D_i has the same form with per-point factors:
+// y_i = c1 (1 - D_i) [ln(1 + c2 n_i/D_i) - ln(1 + c2 m_i/D_i)] is C s_i [ln(1 + n'_i/n0) -
+// ln(1 + m'_i/n0)] with C = c1, n0 = 1/c2, s_i = 1 - D_i and n'_i = n_i/D_i, m'_i = m_i/D_i, so
+// both fits are one solver (s = 1 and unscaled cycles for a single compaction).
 struct Problem {
   Eigen::ArrayXd m, n, l, w;  // from, to, data, w = 1/sigma
+  Eigen::ArrayXd s;           // per-point factor of C (ones for a single compaction)
 
-  Eigen::ArrayXd basis(double n0) const { return (1.0 + n / n0).log() - (1.0 + m / n0).log(); }
+  Eigen::ArrayXd basis(double n0) const {
+    return s * ((1.0 + n / n0).log() - (1.0 + m / n0).log());
+  }
   Eigen::ArrayXd model(double C, double n0) const { return C * basis(n0); }
   double rss(double C, double n0) const { return ((model(C, n0) - l) * w).square().sum(); }
 
@@ -31,7 +38,7 @@ struct Problem {
   Eigen::MatrixX2d jacobian(double C, double n0) const {
     Eigen::MatrixX2d J(n.size(), 2);
     J.col(0) = (basis(n0) * w).matrix();
-    J.col(1) = (-C * (n / (n0 * (n0 + n)) - m / (n0 * (n0 + m))) * w).matrix();
+    J.col(1) = (-C * s * (n / (n0 * (n0 + n)) - m / (n0 * (n0 + m))) * w).matrix();
     return J;
   }
 
@@ -160,7 +167,8 @@ LogLawFit fit_log_law(const std::vector<double>& n, const std::vector<double>& l
     throw std::invalid_argument("fit_log_law: n, l (and sigma) must have equal lengths");
   if (N < 3) throw std::invalid_argument("fit_log_law: need at least 3 points");
   Problem P{Eigen::ArrayXd::Zero(N), Eigen::Map<const Eigen::ArrayXd>(n.data(), N),
-            Eigen::Map<const Eigen::ArrayXd>(l.data(), N), Eigen::ArrayXd::Ones(N)};
+            Eigen::Map<const Eigen::ArrayXd>(l.data(), N), Eigen::ArrayXd::Ones(N),
+            Eigen::ArrayXd::Ones(N)};
   if ((P.n <= 0).any()) throw std::invalid_argument("fit_log_law: cycle numbers must be > 0");
   if (!(P.l > 0).any()) throw std::invalid_argument("fit_log_law: all lengths are zero");
   LogLawFit fit = solve(P, sigma);
@@ -178,7 +186,8 @@ LogLawFit fit_log_law_increments(const std::vector<double>& n_from,
   if (N < 3) throw std::invalid_argument("fit_log_law_increments: need at least 3 increments");
   Problem P{Eigen::Map<const Eigen::ArrayXd>(n_from.data(), N),
             Eigen::Map<const Eigen::ArrayXd>(n_to.data(), N),
-            Eigen::Map<const Eigen::ArrayXd>(dl.data(), N), Eigen::ArrayXd::Ones(N)};
+            Eigen::Map<const Eigen::ArrayXd>(dl.data(), N), Eigen::ArrayXd::Ones(N),
+            Eigen::ArrayXd::Ones(N)};
   if ((P.m < 0).any() || (P.n <= P.m).any())
     throw std::invalid_argument("fit_log_law_increments: need 0 <= n_from < n_to");
   if (!(P.l > 0).any())
@@ -197,6 +206,40 @@ ExperimentConstants to_experiment_constants(const LogLawFit& fit, double D) {
   k.c2 = D / fit.n0;
   k.sigma_c2 = D * fit.sigma_n0 / (fit.n0 * fit.n0);
   return k;
+}
+
+CollapseFit fit_collapse(const std::vector<double>& compaction, const std::vector<double>& n_from,
+                         const std::vector<double>& n_to, const std::vector<double>& dl,
+                         const std::vector<double>& sigma) {
+  const auto N = static_cast<Eigen::Index>(n_to.size());
+  if (compaction.size() != n_to.size() || n_from.size() != n_to.size() ||
+      dl.size() != n_to.size() || (!sigma.empty() && sigma.size() != n_to.size()))
+    throw std::invalid_argument("fit_collapse: inputs must have equal lengths");
+  if (N < 3) throw std::invalid_argument("fit_collapse: need at least 3 increments");
+  const Eigen::ArrayXd D = Eigen::Map<const Eigen::ArrayXd>(compaction.data(), N);
+  if (!((D > 0).all() && (D < 1).all()))
+    throw std::invalid_argument("fit_collapse: compaction ratios must lie in (0, 1)");
+  Problem P{Eigen::Map<const Eigen::ArrayXd>(n_from.data(), N) / D,
+            Eigen::Map<const Eigen::ArrayXd>(n_to.data(), N) / D,
+            Eigen::Map<const Eigen::ArrayXd>(dl.data(), N), Eigen::ArrayXd::Ones(N), 1.0 - D};
+  if ((P.m < 0).any() || (P.n <= P.m).any())
+    throw std::invalid_argument("fit_collapse: need 0 <= n_from < n_to");
+  if (!(P.l > 0).any()) throw std::invalid_argument("fit_collapse: no positive increment");
+  const LogLawFit f = solve(P, sigma);
+  CollapseFit c;
+  c.c1 = f.C;
+  c.sigma_c1 = f.sigma_C;
+  c.c2 = 1.0 / f.n0;
+  c.sigma_c2 = f.sigma_n0 / (f.n0 * f.n0);
+  c.corr = -f.corr;  // c2 falls as n0 rises
+  c.chi2 = f.rss;
+  c.dof = f.dof;
+  c.chi2_red = f.chi2_red;
+  c.weighted = f.weighted;
+  c.converged = f.converged;
+  c.at_bound = f.at_bound;
+  c.points = static_cast<int>(N);
+  return c;
 }
 
 }  // namespace crumple::analysis

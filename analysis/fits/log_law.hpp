@@ -66,4 +66,20 @@ struct ExperimentConstants {
 };
 ExperimentConstants to_experiment_constants(const LogLawFit& fit, double compaction);
 
+/// The law over several compaction ratios, fitted globally (the collapse, docs/STATISTICS.md
+/// §2.3 step 4): dl_i = c1 (1 - D_i) [ln(1 + c2 n_i/D_i) - ln(1 + c2 m_i/D_i)] for the
+/// increments dl_i between cycles m_i < n_i of a sheet crumpled to D_i (m_i = 0 and dl_i = l_i:
+/// the cumulative form). The same solver as fit_log_law (c1 exact, c2 = 1/n0 searched within
+/// [1/kN0Max, 1/kN0Min]) and the same covariance rules; the errors of c2 are propagated from
+/// those of n0.
+struct CollapseFit {
+  double c1 = 0, sigma_c1 = 0, c2 = 0, sigma_c2 = 0, corr = 0;
+  double chi2 = 0, chi2_red = 0;
+  int dof = 0, points = 0;
+  bool weighted = false, converged = false, at_bound = false;
+};
+CollapseFit fit_collapse(const std::vector<double>& compaction, const std::vector<double>& n_from,
+                         const std::vector<double>& n_to, const std::vector<double>& dl,
+                         const std::vector<double>& sigma = {});
+
 }  // namespace crumple::analysis

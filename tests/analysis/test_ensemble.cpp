@@ -2,7 +2,9 @@
 // s.e.m. of stats.json documents built here, against sums computed here; the log-law fits to
 // the ensemble means (weights, absolute-sigma convention, unweighted fallback, too few cycles);
 // the compaction the runs agree on per cycle and overall; the KS tallies, the per-stage and the
-// threshold-sensitivity tables; and `crumple-analyze ensemble` end to end.
+// threshold-sensitivity tables; `crumple-analyze ensemble` end to end; the collapse over
+// ensembles of several compaction ratios (`crumple-analyze collapse`).
+#include "analysis/ensemble/collapse.hpp"
 #include "analysis/ensemble/ensemble.hpp"
 #include "analysis/fits/log_law.hpp"
 #include "analysis/io/run_reader.hpp"
@@ -363,5 +365,87 @@ TEST(Ensemble, CommandLine) {
       << "a per-run option";
   EXPECT_FALSE(fs::exists(bad));
   EXPECT_EQ(run_analyze(""), 2) << "neither a run file nor ensemble";
+  fs::remove_all(dir);
+}
+
+// The collapse over ensembles of several compaction ratios: seeds scattered about the
+// experiments' law l = c1 (1 - D) ln(1 + c2 n/D) with offsets that cancel in every cycle give
+// back (c1, c2) from the global fit; each ratio keeps its own fit; the collapsed points are
+// n/D against mean/(1 - D); an ensemble without one compaction is refused by name.
+TEST(Collapse, GlobalFitOverEnsemblesRecoversTheLaw) {
+  const double c1 = 52, c2 = 0.1;
+  const std::vector<double> ratios = {0.45, 0.27, 0.09};
+  const std::vector<double> offset = {0.3, -0.1, -0.2};
+  const fs::path dir = fs::temp_directory_path() / "crumple_test_collapse";
+  fs::remove_all(dir);
+  std::vector<EnsembleInput> inputs;
+  for (double D : ratios) {
+    std::vector<J> docs;
+    for (int s = 0; s < 3; ++s) {
+      std::vector<double> P, l;
+      for (int n = 1; n <= 5; ++n) {
+        const double y = c1 * (1 - D) * std::log1p(c2 * n / D);
+        P.push_back(y + offset[s] * n), l.push_back(2 * y + offset[(s + 1) % 3] * n);
+      }
+      docs.push_back(stats_doc(s + 1, P, l, D));
+    }
+    const fs::path path = dir / ("D" + std::to_string(D) + ".json");
+    write_ensemble(path.string(), ensemble_json(as_runs(docs)));
+    inputs.push_back(read_ensemble(path.string()));
+  }
+  const J c = collapse_json(inputs);
+  EXPECT_EQ(c["compactions"].size(), 3u);
+  EXPECT_TRUE(c["notes"].empty()) << c["notes"].dump();
+  for (const char* q : {"perimeter_P", "crease_length_L0"}) {
+    const double scale = std::string(q) == "perimeter_P" ? 1.0 : 2.0;
+    const J& f = c["fits"][q]["increments"];
+    SCOPED_TRACE(q);
+    ASSERT_FALSE(f.contains("error")) << f.dump();
+    EXPECT_TRUE(f["weighted"].get<bool>());
+    EXPECT_NEAR(f["c1"].get<double>(), scale * c1, 1e-6 * c1);
+    EXPECT_NEAR(f["c2"].get<double>(), c2, 1e-6 * c2);
+    EXPECT_EQ(f["points"], 15);
+    EXPECT_NEAR(f["chi2"].get<double>(), 0.0, 1e-10);
+    EXPECT_NEAR(c["fits"][q]["cumulative"]["c2"].get<double>(), c2, 1e-6 * c2);
+    ASSERT_EQ(c["points"][q].size(), 15u);
+    const J& p = c["points"][q][7];  // D = 0.27, cycle 3
+    EXPECT_DOUBLE_EQ(p["x"].get<double>(), 3 / 0.27);
+    EXPECT_NEAR(p["y"].get<double>(), scale * c1 * std::log1p(c2 * 3 / 0.27), 1e-9);
+  }
+  ASSERT_EQ(c["groups"].size(), 3u);
+  EXPECT_EQ(c["groups"][1]["compaction"].get<double>(), 0.27);
+  EXPECT_NEAR(c["groups"][1]["fits"]["perimeter_P"]["c2"].get<double>(), c2, 1e-6);
+
+  // One ratio only: said, and the fit is that ratio's.
+  const J one = collapse_json({inputs[1]});
+  ASSERT_EQ(one["notes"].size(), 1u);
+  EXPECT_NEAR(one["fits"]["perimeter_P"]["increments"]["c1"].get<double>(), c1, 1e-6 * c1);
+
+  // Refused: an ensemble of mixed compactions, a missing file, broken JSON.
+  std::vector<J> mixed = {stats_doc(1, {1, 2, 3}, {1, 2, 3}, 0.27),
+                          stats_doc(2, {1, 2, 3}, {1, 2, 3}, 0.45)};
+  const fs::path bad = dir / "mixed.json";
+  write_ensemble(bad.string(), ensemble_json(as_runs(mixed)));
+  try {
+    read_ensemble(bad.string());
+    FAIL() << "an ensemble without one compaction must be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(bad.string() + ": no single compaction ratio"),
+              std::string::npos) << e.what();
+  }
+  EXPECT_THROW(read_ensemble((dir / "nope.json").string()), InputError);
+  std::ofstream(dir / "broken.json") << "{ not json";
+  EXPECT_THROW(read_ensemble((dir / "broken.json").string()), InputError);
+
+  // The command line: exit 0 and the document; bad input exit 2 and nothing written.
+  const fs::path out = dir / "collapse.json";
+  std::string args;
+  for (const auto& in : inputs) args += " " + in.path;
+  ASSERT_EQ(run_analyze("collapse -o " + out.string() + args), 0);
+  EXPECT_TRUE(fs::exists(out));
+  const fs::path none = dir / "none.json";
+  EXPECT_EQ(run_analyze("collapse -o " + none.string() + " " + bad.string()), 2);
+  EXPECT_EQ(run_analyze("--threshold 0.1 collapse -o " + none.string() + args), 2);
+  EXPECT_FALSE(fs::exists(none));
   fs::remove_all(dir);
 }
