@@ -13,7 +13,7 @@ DEB_PACKAGES := build-essential cmake git pkg-config libeigen3-dev libhdf5-dev h
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
   python3-matplotlib python3-numpy python3-h5py python3-scipy python3-yaml
 
-.PHONY: all deps build test test-all test-sanitize bench bench-axial physics-check reproduce calibrate docs clean
+.PHONY: all deps build test test-all test-sanitize test-slurm bench bench-axial physics-check reproduce calibrate docs clean
 
 all: build
 
@@ -56,6 +56,13 @@ test-sanitize: deps
 	  -DCRUMPLE_BUILD_BENCH=OFF $(CMAKE_ARGS)
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
 	cd $(SANITIZE_BUILD) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -LE 'slow|sanitize_skip'
+
+# The Slurm path against a real one-node Slurm on this machine (installs Debian's slurmctld,
+# slurmd, slurm-client and munge when missing; tests/slurm/test_slurm.sh): the tiny sweep
+# locally and through Slurm with identical results, and a run stopped by SIGTERM failing the
+# submission and resuming on the next. About two minutes; run by .ci/run.
+test-slurm: build
+	tests/slurm/test_slurm.sh $(BUILD)/test-slurm
 
 # bench_radial at physical mass: the explicit-only variant is timed over ten spans of 0.01 s
 # spread over the interval (each from the block-Jacobi hybrid's state there) and scaled (its
@@ -105,7 +112,9 @@ physics-check: build
 	  --jobs $(PHYSICS_JOBS) --threads 1 --out-dir $(BUILD)/physics-check \
 	  --json $(BUILD)/physics-check/summary.json
 
+include pipeline/slurm/slurm.mk
 include pipeline/reproduce.mk
+include pipeline/sweep.mk
 include pipeline/calibration/calibrate.mk
 include pipeline/checks/rate_check.mk
 

@@ -17,7 +17,7 @@ RESULTS    ?= results
 SIM        := $(BUILD)/sim/apps/crumple-sim
 ANALYZE    := $(BUILD)/analysis/apps/crumple-analyze
 PYTHON     := /usr/bin/python3
-RUN_THREADS ?= 1
+RUN_THREADS ?= $(or $(PRESET_THREADS),1)
 
 RUNS  := $(foreach s,$(SEEDS_USED),$(RUNDIR)/seed$(s).h5)
 STATS := $(foreach s,$(SEEDS_USED),$(RUNDIR)/seed$(s).analysis/stats.json)
@@ -25,11 +25,18 @@ STATS := $(foreach s,$(SEEDS_USED),$(RUNDIR)/seed$(s).analysis/stats.json)
 .PHONY: reproduce report runs analysis
 .SECONDARY: $(RUNS) $(STATS)
 
-# The build must finish before the runs start; the runs then go in parallel.
+# The build must finish before the runs start; the runs then go in parallel, here or (with
+# SCHEDULER=slurm, pipeline/slurm/slurm.mk) as a Slurm array with the report as a dependent job.
+REPRODUCE_VARS = PRESET=$(PRESET) SEEDS="$(SEEDS_USED)" PROTOCOL=$(PROTOCOL) BUILD=$(BUILD) \
+  RESULTS=$(RESULTS)
 reproduce: build
-	$(MAKE) --no-print-directory -j $(JOBS) report PRESET=$(PRESET) SEEDS="$(SEEDS_USED)" \
-	  PROTOCOL=$(PROTOCOL) BUILD=$(BUILD)
+ifeq ($(SCHEDULER),slurm)
+	$(SLURM_SUBMIT) --name reproduce-$(PRESET) --targets $(STATS) --final report \
+	  --make-vars '$(REPRODUCE_VARS)' --threads $(RUN_THREADS) --log-dir $(RUNDIR)/slurm
+else
+	$(MAKE) --no-print-directory -j $(JOBS) report $(REPRODUCE_VARS)
 	@echo "report: $(RESULTS)/REPORT.md"
+endif
 
 runs: $(RUNS)
 analysis: $(STATS)

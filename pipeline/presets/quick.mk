@@ -4,4 +4,5 @@
 # triangles, and by cycle 5 three quarters of the 121 L0 hinge network is creased at c0 = 0.3
 # (results/REPORT.md).
 PRESET_SEEDS := 1 2 3 4
+PRESET_THREADS := 1
 PRESET_SETS := --set mesh.nodes=1500 --set protocol.cycles=5

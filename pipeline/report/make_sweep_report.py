@@ -1,0 +1,182 @@
+#!/usr/bin/python3
+"""Writes a sweep's REPORT.md (pipeline/sweep.mk) from its points file, the group ensembles
+(RESULTS/groups/GROUP/ensemble.json, `crumple-analyze ensemble`), the collapse document
+(RESULTS/collapse.json, `crumple-analyze collapse`, when the sweep varies the compaction) and the
+figures of pipeline/plots/plot_sweep.py. It fits nothing: every number comes from those files.
+Each comparison with the experiments is stated as agree or disagree with the distance in
+standard errors of the simulation (the main report's rule, make_report.py AGREE_SEM).
+
+usage: make_sweep_report.py --points runs/sweeps/NAME/points.json --results results/NAME \
+                            -o results/NAME/REPORT.md
+"""
+import argparse
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import die, law_constants, load_ensemble, load_json  # noqa: E402
+from make_report import AGREE_SEM, fmt, pm  # noqa: E402
+
+KEYS = [("perimeter_P", "P (facet perimeters, the experiments' measure)"),
+        ("crease_length_L0", "l/L0 (creased mesh edges)")]
+
+
+def verdict(sim, sigma, ref, undetermined=False):
+    """'agree (0.8 σ)' / 'disagree (5.1 σ)' / 'not judged (...)', σ the fit's own error.
+    `undetermined`: the fit stopped on a bound of its search or its error exceeds the value, so
+    the data do not fix the constant and no agreement is claimed."""
+    if sim is None or ref is None:
+        return "not judged (no fit)"
+    if undetermined:
+        return "not determined by these cycles (fit on its bound or error > value)"
+    if not sigma:
+        return "not judged (no uncertainty)"
+    z = abs(sim - ref) / sigma
+    return f"{'agree' if z <= AGREE_SEM else 'disagree'} ({z:.1f} σ)"
+
+
+def ratio(sim, ref):
+    return "–" if sim is None or not ref else f"{sim / ref:.3g}"
+
+
+def c2_undetermined(f):
+    return bool(f.get("at_bound")) or not f.get("sigma_c2") or f["sigma_c2"] > f["c2"]
+
+
+def groups_of(points):
+    order = []
+    for p in points["points"]:
+        if p["group"] not in order:
+            order.append(p["group"])
+    return order
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--points", required=True)
+    ap.add_argument("--results", required=True)
+    ap.add_argument("-o", "--output", required=True)
+    a = ap.parse_args()
+    pts = load_json(a.points, "sweep points file")
+    figures = ["crease_length.png"] + (["collapse.png"] if pts.get("collapse") else [])
+    for f in figures:
+        if not os.path.isfile(os.path.join(a.results, f)):
+            die(f"missing figure {os.path.join(a.results, f)} (run pipeline/plots/plot_sweep.py "
+                "first)")
+    c1_exp, c2_exp = law_constants()
+    groups = groups_of(pts)
+    ens = {g: load_ensemble(os.path.join(a.results, "groups", g, "ensemble.json")) for g in groups}
+    first = load_json(os.path.join(pts["points"][0]["analysis"], "stats.json"), "stats.json")
+    meta = first.get("input", {}).get("meta", {})
+
+    L = []
+    add = L.append
+    add(f"# Sweep `{pts['name']}`\n")
+    if pts.get("description"):
+        add(f"{pts['description']}.\n")
+    add(f"- sweep file: `{pts['file']}`; protocol `{pts['protocol']}`; preset `{pts['preset']}` "
+        f"({' '.join(pts['preset_sets']) or 'no settings'})")
+    if pts["set"]:
+        add("- fixed on top of the preset: " +
+            ", ".join(f"`{s['key']} = {s['value']}`" for s in pts["set"]))
+    for g in pts["grid"]:
+        add(f"- grid: `{g['key']}` ∈ {{{', '.join(g['values'])}}}")
+    add(f"- seeds: {', '.join(str(s) for s in pts['seeds'])}; {len(pts['points'])} runs in "
+        f"{len(groups)} groups; program {meta.get('program_version', '?')} "
+        f"({meta.get('git_revision', '?')})")
+    add("- each run's resolved configuration, seed and program version are in its run file "
+        "(`/config`, `/meta`); the runs are listed in "
+        f"`{os.path.relpath(a.points, os.path.dirname(a.output) or '.')}`\n")
+
+    add("## Per group\n")
+    add("Crease length P at the last cycle (mean ± s.e.m. over seeds), and each group's own fit "
+        "of the law to the increments of P (docs/STATISTICS.md §2.3), converted to the "
+        f"experiments' constants (c1 = {c1_exp:g}, c2 = {c2_exp:g}; docs/STATISTICS.md §2.1).\n")
+    add("| group | D | runs | cycles | P at last cycle | experiment | c1 | c2 |")
+    add("| --- | --- | --- | --- | --- | --- | --- | --- |")
+    for g in groups:
+        e = ens[g]
+        D = e.get("compaction")
+        last = e["cycles"][-1]
+        law = (c1_exp * (1 - D) * __import__("math").log1p(c2_exp * last["cycle"] / D)
+               if D and 0 < D < 1 else None)
+        f = e["fits"]["perimeter_P"]["increments"]
+        c1 = pm(f.get("c1"), f.get("sigma_c1")) if "error" not in f else f"– ({f['error']})"
+        c2 = pm(f.get("c2"), f.get("sigma_c2")) if "error" not in f else "–"
+        add(f"| {g} | {fmt(D)} | {e['n_runs']} | {len(e['cycles'])} | "
+            f"{pm(last.get('perimeter_P_mean'), last.get('perimeter_P_sem'))} | {fmt(law)} | "
+            f"{c1} | {c2} |")
+    add("")
+    add("![crease length per group](crease_length.png)\n")
+
+    if pts.get("collapse"):
+        col = load_json(os.path.join(a.results, "collapse.json"), "collapse document")
+        add("## The collapse: one law for every compaction\n")
+        add("The law l = c1 (1 − D) ln(1 + c2 n/D) fitted to every group at once "
+            "(`crumple-analyze collapse`: least squares on the per-cycle increments of the "
+            "ensemble means, weighted by their seed-to-seed s.e.m., c1 exact and c2 searched; "
+            "the cumulative fit is shown for comparison, its errors are too small because the "
+            "cumulative values are correlated between cycles).\n")
+        for note in col.get("notes", []):
+            add(f"- note: {note}")
+        add("")
+        add("| measure | fit | c1 | c1 / 52 | c1 against experiment | c2 | c2 / 0.1 | "
+            "c2 against experiment | χ²/dof |")
+        add("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+        summary = {}
+        for key, label in KEYS:
+            for kind in ("increments", "cumulative"):
+                f = col["fits"][key][kind]
+                if "error" in f:
+                    add(f"| {label} | {kind} | – ({f['error']}) | | | | | | |")
+                    continue
+                add(f"| {label} | {kind} | {pm(f['c1'], f['sigma_c1'])} | "
+                    f"{ratio(f['c1'], c1_exp)} | {verdict(f['c1'], f['sigma_c1'], c1_exp)} | "
+                    f"{pm(f['c2'], f['sigma_c2'])} | {ratio(f['c2'], c2_exp)} | "
+                    f"{verdict(f['c2'], f['sigma_c2'], c2_exp, c2_undetermined(f))} | "
+                    f"{fmt(f['chi2'])}/{f['dof']} |")
+                if kind == "increments":
+                    summary[key] = f
+        add("")
+        f = summary.get("perimeter_P")
+        if f:
+            add("**In plain words.** On P, the experiments' measure, the global fit gives "
+                f"c1 = {pm(f['c1'], f['sigma_c1'])} against the experiments' {c1_exp:g} "
+                f"({verdict(f['c1'], f['sigma_c1'], c1_exp)}) and c2 = "
+                f"{pm(f['c2'], f['sigma_c2'])} against {c2_exp:g} "
+                f"({verdict(f['c2'], f['sigma_c2'], c2_exp, c2_undetermined(f))}). χ²/dof = "
+                f"{fmt(f['chi2'])}/{f['dof']} says "
+                + ("the law describes all groups within their errors."
+                   if f['dof'] > 0 and f['chi2'] / f['dof'] < 2 else
+                   "the groups do not fall on one curve of this law within their errors.")
+                + " The experimental constants carry no published uncertainty, and the level "
+                "of c1 depends on the reading of the (1 − D) factor (docs/STATISTICS.md §2.4): "
+                "the shape (c2, the collapse) is the firmer comparison.\n")
+        add("![the collapse](collapse.png)\n")
+        add("Per group, the same law fitted to that group alone (from its ensemble):\n")
+        add("| D | c1 (P) | c2 (P) | c1 (l/L0) | c2 (l/L0) |")
+        add("| --- | --- | --- | --- | --- |")
+        for g in col["groups"]:
+            fp, fl = g["fits"]["perimeter_P"], g["fits"]["crease_length_L0"]
+            cell = lambda f, k: ("– (" + f["error"] + ")" if "error" in f  # noqa: E731
+                                 else pm(f.get(k), f.get("sigma_" + k)))
+            add(f"| {fmt(g['compaction'])} | {cell(fp, 'c1')} | {cell(fp, 'c2')} | "
+                f"{cell(fl, 'c1')} | {cell(fl, 'c2')} |")
+        add("")
+    add("## Files\n")
+    add("- `groups/GROUP/ensemble.json`: each group's ensemble statistics and fits"
+        + ("; `collapse.json`: the global fit and the collapsed points" if pts.get("collapse")
+           else ""))
+    add("- the runs and their analyses: `" + os.path.dirname(pts["points"][0]["run"]).rsplit("/", 1)[0]
+        + "/GROUP/seedS.h5` and `.analysis/`")
+    os.makedirs(os.path.dirname(a.output) or ".", exist_ok=True)
+    tmp = a.output + ".new"
+    with open(tmp, "w") as f:
+        f.write("\n".join(L) + "\n")
+    os.replace(tmp, a.output)
+    print(f"make_sweep_report.py: wrote {a.output}")
+
+
+if __name__ == "__main__":
+    main()

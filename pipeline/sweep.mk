@@ -1,0 +1,49 @@
+# make sweep SWEEP=NAME: every point of pipeline/sweeps/NAME.yaml as a file target, analysed,
+# grouped into ensembles, fitted together (the collapse, when the grid varies the compaction)
+# and reported in results/NAME/REPORT.md (pipeline/sweeps/README.md).
+#
+# The points are expanded (and each group's configuration checked by crumple-sim) into
+# runs/sweeps/NAME/points.mk, which a second make reads: a finished run is never redone, a
+# killed one (RUN.h5.tmp holds its checkpoint) resumes, `-j` runs points side by side, and a
+# point whose arguments changed (its RUN.h5.args) is run again. Run logs: RUN.h5.log.
+SWEEP ?=
+SWEEP_FILE    = pipeline/sweeps/$(SWEEP).yaml
+SWEEP_DIR     = runs/sweeps/$(SWEEP)
+SWEEP_RESULTS = results/$(SWEEP)
+SWEEP_NAMES  := $(notdir $(basename $(wildcard pipeline/sweeps/*.yaml)))
+# What the second make (or a Slurm job) is given; SWEEP_DIR and SWEEP_RESULTS may be overridden
+# on the command line to keep a sweep elsewhere (the Slurm test does).
+SWEEP_VARS    = SWEEP=$(SWEEP) BUILD=$(BUILD) SWEEP_DIR=$(SWEEP_DIR) SWEEP_RESULTS=$(SWEEP_RESULTS)
+
+.PHONY: sweep sweep-runs sweep-report
+
+ifneq ($(SWEEP),)
+-include $(SWEEP_DIR)/points.mk
+endif
+
+sweep: build
+	@test -n "$(SWEEP)" -a -f "$(SWEEP_FILE)" || { \
+	  echo "make sweep: give SWEEP=NAME, one of: $(SWEEP_NAMES)"; exit 2; }
+	$(PYTHON) pipeline/sweeps/expand_sweep.py $(SWEEP_FILE) --out-dir $(SWEEP_DIR) \
+	  --results $(SWEEP_RESULTS) --sim $(SIM)
+ifeq ($(SCHEDULER),slurm)
+	$(SLURM_SUBMIT) --name sweep-$(SWEEP) --points $(SWEEP_DIR)/points.json --final sweep-report \
+	  --make-vars '$(SWEEP_VARS)' --log-dir $(SWEEP_DIR)/slurm \
+	  --threads $$($(PYTHON) -c "import json; print(json.load(open('$(SWEEP_DIR)/points.json'))['threads'])")
+else
+	$(MAKE) --no-print-directory -j $(JOBS) sweep-report $(SWEEP_VARS)
+	@echo "sweep report: $(SWEEP_RESULTS)/REPORT.md"
+endif
+
+sweep-runs: $(SWEEP_RUNS)
+sweep-report: $(SWEEP_RESULTS)/REPORT.md
+
+# The collapse (when the grid varies the compaction), the figures, then the report.
+$(SWEEP_RESULTS)/REPORT.md: $(SWEEP_ENSEMBLES) $(SWEEP_DIR)/points.json $(ANALYZE) \
+    $(wildcard pipeline/plots/*.py pipeline/report/*.py)
+	@mkdir -p $(SWEEP_RESULTS)
+	$(if $(SWEEP_COLLAPSE),$(ANALYZE) collapse -o $(SWEEP_RESULTS)/collapse.json $(SWEEP_ENSEMBLES))
+	$(PYTHON) pipeline/plots/plot_sweep.py --points $(SWEEP_DIR)/points.json \
+	  --results $(SWEEP_RESULTS)
+	$(PYTHON) pipeline/report/make_sweep_report.py --points $(SWEEP_DIR)/points.json \
+	  --results $(SWEEP_RESULTS) -o $@

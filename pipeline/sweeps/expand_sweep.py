@@ -1,0 +1,277 @@
+#!/usr/bin/env python3
+"""Expands a sweep file (pipeline/sweeps/NAME.yaml; pipeline/sweeps/README.md) into its points.
+
+A sweep names a protocol, the preset it starts from, fixed settings on top of the preset, a
+grid of config or stage keys and the seeds. Every combination of grid values and seed is one
+point: one run of crumple-sim with the preset's --set arguments, then the sweep's fixed ones,
+then the point's own (the last --set of a key wins). Points with the same grid values and
+different seeds form a group, whose runs make one ensemble.
+
+Writes into OUT_DIR (runs/sweeps/NAME):
+  points.json   the points: name, group, seed, run file, analysis folder, crumple-sim arguments
+  points.mk     the same as make rules (included by pipeline/sweep.mk): one file target per run,
+                per analysis, per group ensemble
+  PATH.args     per run, its arguments; rewritten only when they change, so a point whose
+                arguments changed is run again and the others are not
+With --sim, each group's configuration is first checked with `crumple-sim --print-config`, so a
+mistyped key fails here, naming the sweep file's line, rather than in every run.
+
+Exit codes: 0 done, 2 bad sweep file (nothing written).
+"""
+import argparse
+import itertools
+import json
+import os
+import re
+import shlex
+import subprocess
+import sys
+
+import yaml
+
+KEYS = {"description", "preset", "protocol", "set", "grid", "seeds", "threads", "collapse"}
+REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+
+
+class SweepError(Exception):
+    pass
+
+
+def fail(path, node, key, what):
+    line = f":{node.start_mark.line + 1}" if node is not None else ""
+    raise SweepError(f"{path}{line}: {key}: {what}")
+
+
+def mapping(node):
+    """A YAML mapping node as {key: (key node, value node)}."""
+    return {k.value: (k, v) for k, v in node.value}
+
+
+def scalar_text(path, node, key):
+    if not isinstance(node, yaml.ScalarNode) or node.value == "":
+        fail(path, node, key, "expected a value")
+    return node.value
+
+
+def read_preset(path):
+    """PRESET_SEEDS, PRESET_SETS and PRESET_THREADS of a preset file (pipeline/presets/NAME.mk), which holds only
+    `NAME := value` lines and comments, so that a sweep and `make reproduce` start from the same
+    settings."""
+    values = {}
+    with open(path) as f:
+        for no, line in enumerate(f, 1):
+            s = line.strip()
+            if not s or s.startswith("#"):
+                continue
+            m = re.fullmatch(r"([A-Z_]+)\s*:=\s*(.*)", s)
+            if not m or "$" in m.group(2):
+                raise SweepError(f"{path}:{no}: a preset holds only `NAME := value` lines")
+            values[m.group(1)] = m.group(2)
+    threads = values.get("PRESET_THREADS", "1")
+    if not re.fullmatch(r"[1-9][0-9]*", threads):
+        raise SweepError(f"{path}: PRESET_THREADS: {threads!r} is not a thread count")
+    return (values.get("PRESET_SEEDS", "").split(), shlex.split(values.get("PRESET_SETS", "")),
+            int(threads))
+
+
+def value_name(v):
+    """A grid value as it appears in a folder name."""
+    return re.sub(r"[^A-Za-z0-9.+-]", "_", v)
+
+
+def load(path):
+    try:
+        with open(path) as f:
+            root = yaml.compose(f)
+    except FileNotFoundError:
+        raise SweepError(f"{path}: no such sweep file")
+    except yaml.YAMLError as e:
+        raise SweepError(f"{path}: not valid YAML: {e}")
+    if not isinstance(root, yaml.MappingNode):
+        raise SweepError(f"{path}: a sweep file is a mapping (protocol, preset, grid, seeds, ...)")
+    top = mapping(root)
+    for k, (kn, _) in top.items():
+        if k not in KEYS:
+            fail(path, kn, k, f"unknown key (known: {', '.join(sorted(KEYS))})")
+    for k in ("protocol", "preset", "grid"):
+        if k not in top:
+            raise SweepError(f"{path}: {k}: missing")
+    sweep = {"file": path, "name": os.path.splitext(os.path.basename(path))[0]}
+    sweep["description"] = top["description"][1].value if "description" in top else ""
+    pn = top["protocol"][1]
+    sweep["protocol"] = scalar_text(path, pn, "protocol")
+    if not os.path.isfile(os.path.join(REPO, sweep["protocol"])):
+        fail(path, pn, "protocol", f"no such file {sweep['protocol']}")
+    prn = top["preset"][1]
+    sweep["preset"] = scalar_text(path, prn, "preset")
+    preset_file = os.path.join("pipeline", "presets", sweep["preset"] + ".mk")
+    if not os.path.isfile(os.path.join(REPO, preset_file)):
+        known = sorted(f[:-3] for f in os.listdir(os.path.join(REPO, "pipeline", "presets")))
+        fail(path, prn, "preset", f"no preset {sweep['preset']!r} (known: {', '.join(known)})")
+    sweep["preset_file"] = preset_file
+    preset_seeds, sweep["preset_sets"], preset_threads = read_preset(os.path.join(REPO, preset_file))
+
+    fixed = []
+    if "set" in top:
+        sn = top["set"][1]
+        if not isinstance(sn, yaml.MappingNode):
+            fail(path, sn, "set", "expected a mapping of key: value")
+        for k, (kn, vn) in mapping(sn).items():
+            fixed.append((k, scalar_text(path, vn, f"set.{k}")))
+    sweep["set"] = fixed
+
+    gn = top["grid"][1]
+    if not isinstance(gn, yaml.MappingNode) or not gn.value:
+        fail(path, gn, "grid", "expected a mapping of key: [values]")
+    grid = []
+    for k, (kn, vn) in mapping(gn).items():
+        if not isinstance(vn, yaml.SequenceNode) or not vn.value:
+            fail(path, vn, f"grid.{k}", "expected a non-empty list of values")
+        values = [scalar_text(path, x, f"grid.{k}") for x in vn.value]
+        if len(set(values)) != len(values):
+            fail(path, vn, f"grid.{k}", "a value appears twice")
+        grid.append({"key": k, "values": values, "line": kn.start_mark.line + 1})
+    sweep["grid"] = grid
+
+    if "seeds" in top:
+        sdn = top["seeds"][1]
+        if not isinstance(sdn, yaml.SequenceNode) or not sdn.value:
+            fail(path, sdn, "seeds", "expected a non-empty list of seeds")
+        seeds = [scalar_text(path, x, "seeds") for x in sdn.value]
+    else:
+        seeds = preset_seeds
+    for s in seeds:
+        if not re.fullmatch(r"[0-9]+", s):
+            fail(path, top.get("seeds", (None, None))[1], "seeds", f"{s!r} is not a seed (0, 1, 2, ...)")
+    if len(set(seeds)) != len(seeds):
+        fail(path, top["seeds"][1], "seeds", "a seed appears twice")
+    sweep["seeds"] = seeds
+    sweep["threads"] = preset_threads
+    if "threads" in top:
+        tn = top["threads"][1]
+        t = scalar_text(path, tn, "threads")
+        if not re.fullmatch(r"[1-9][0-9]*", t):
+            fail(path, tn, "threads", f"{t!r} is not a thread count")
+        sweep["threads"] = int(t)
+    has_compaction = any(g["key"].endswith(".compaction") for g in grid)
+    sweep["collapse"] = has_compaction
+    if "collapse" in top:
+        cn = top["collapse"][1]
+        c = scalar_text(path, cn, "collapse")
+        if c not in ("true", "false"):
+            fail(path, cn, "collapse", "expected true or false")
+        sweep["collapse"] = c == "true"
+    return sweep
+
+
+def points(sweep, out_dir):
+    """Every point of the grid and seeds, in order: grid values vary slowest, seeds fastest."""
+    keys = [g["key"] for g in sweep["grid"]]
+    base = [a for k, v in sweep["set"] for a in ("--set", f"{k}={v}")]
+    out = []
+    for combo in itertools.product(*(g["values"] for g in sweep["grid"])):
+        group = "_".join(f"{k.split('.')[-1]}-{value_name(v)}" for k, v in zip(keys, combo))
+        own = [a for k, v in zip(keys, combo) for a in ("--set", f"{k}={v}")]
+        for seed in sweep["seeds"]:
+            run = os.path.join(out_dir, group, f"seed{seed}.h5")
+            out.append({"name": f"{group}/seed{seed}", "group": group, "seed": int(seed),
+                        "values": dict(zip(keys, combo)), "run": run,
+                        "analysis": run[:-3] + ".analysis",
+                        "args": [sweep["protocol"], "--seed", seed, "--threads",
+                                 str(sweep["threads"])] + sweep["preset_sets"] + base + own})
+    return out
+
+
+def check_with_sim(sweep, pts, sim):
+    """Each group's configuration through `crumple-sim --print-config` (keys, ranges, stages)."""
+    seen = set()
+    for p in pts:
+        if p["group"] in seen:
+            continue
+        seen.add(p["group"])
+        r = subprocess.run([sim, "--print-config"] + p["args"], cwd=REPO, capture_output=True,
+                           text=True)
+        if r.returncode != 0:
+            lines = ", ".join(f"line {g['line']}" for g in sweep["grid"])
+            raise SweepError(f"{sweep['file']}: point {p['group']} ({lines} of the grid; the "
+                             f"preset's and the sweep's set:) is not a valid configuration:\n"
+                             f"{r.stderr.strip()}")
+
+
+def write_if_changed(path, text):
+    if os.path.isfile(path):
+        with open(path) as f:
+            if f.read() == text:
+                return
+    tmp = path + ".new"
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, path)
+
+
+def make_rules(sweep, pts, out_dir, results):
+    q = shlex.quote
+    lines = [f"# Generated by pipeline/sweeps/expand_sweep.py from {sweep['file']}; do not edit.",
+             f"SWEEP_PRESET := {sweep['preset']}",
+             f"SWEEP_PROTOCOL := {sweep['protocol']}",
+             f"SWEEP_COLLAPSE := {'yes' if sweep['collapse'] else ''}",
+             f"SWEEP_RUNS := {' '.join(p['run'] for p in pts)}",
+             f"SWEEP_STATS := {' '.join(p['analysis'] + '/stats.json' for p in pts)}"]
+    groups = []
+    for p in pts:
+        if p["group"] not in groups:
+            groups.append(p["group"])
+    ens = [f"{results}/groups/{g}/ensemble.json" for g in groups]
+    lines.append(f"SWEEP_ENSEMBLES := {' '.join(ens)}")
+    lines.append("")
+    for p in pts:
+        args = " ".join(q(a) for a in p["args"])
+        lines += [f"{p['run']}: {p['run']}.args {sweep['protocol']} | $(SIM)",
+                  f"\t$(SIM) {args} -o $@ $(if $(wildcard $@.tmp),--resume,--force) > $@.log 2>&1 "
+                  f"|| {{ echo \"run failed: $@ (see $@.log):\"; tail -n 5 $@.log; exit 1; }}",
+                  f"{p['analysis']}/stats.json: {p['run']} | $(ANALYZE)",
+                  f"\t$(ANALYZE) $< -o {p['analysis']} > {p['analysis']}.log",
+                  ""]
+    for g, e in zip(groups, ens):
+        members = [p["analysis"] for p in pts if p["group"] == g]
+        lines += [f"{e}: {' '.join(m + '/stats.json' for m in members)} | $(ANALYZE)",
+                  f"\t@mkdir -p $(@D)",
+                  f"\t$(ANALYZE) ensemble -o $@ {' '.join(members)} > $@.log",
+                  ""]
+    return "\n".join(lines) + "\n"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("sweep", help="sweep file, e.g. pipeline/sweeps/compaction.yaml")
+    ap.add_argument("--out-dir", required=True, help="folder of the runs, e.g. runs/sweeps/NAME")
+    ap.add_argument("--results", required=True, help="folder of the report, e.g. results/NAME")
+    ap.add_argument("--sim", help="crumple-sim, to check each group's configuration")
+    a = ap.parse_args()
+    try:
+        sweep = load(a.sweep)
+        pts = points(sweep, a.out_dir)
+        if a.sim:
+            check_with_sim(sweep, pts, a.sim)
+    except SweepError as e:
+        print(f"expand_sweep: {e}", file=sys.stderr)
+        return 2
+    os.makedirs(a.out_dir, exist_ok=True)
+    for p in pts:
+        os.makedirs(os.path.dirname(p["run"]), exist_ok=True)
+        write_if_changed(p["run"] + ".args", " ".join(shlex.quote(x) for x in p["args"]) + "\n")
+    doc = {k: sweep[k] for k in ("name", "file", "description", "preset", "protocol", "seeds",
+                                 "threads", "collapse")}
+    doc["set"] = [{"key": k, "value": v} for k, v in sweep["set"]]
+    doc["grid"] = [{"key": g["key"], "values": g["values"]} for g in sweep["grid"]]
+    doc["preset_sets"] = sweep["preset_sets"]
+    doc["points"] = pts
+    write_if_changed(os.path.join(a.out_dir, "points.json"), json.dumps(doc, indent=2) + "\n")
+    write_if_changed(os.path.join(a.out_dir, "points.mk"), make_rules(sweep, pts, a.out_dir, a.results))
+    print(f"expand_sweep: {sweep['name']}: {len(pts)} runs in "
+          f"{len({p['group'] for p in pts})} groups -> {a.out_dir}/points.mk")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,114 @@
+#!/usr/bin/python3
+"""pipeline/sweeps/expand_sweep.py: the points of a sweep (grid x seeds, the preset's settings,
+then the sweep's, then the point's own), the make rules and the per-run argument files (rewritten
+only when they change), and bad sweep files refused with the file, line and key, exit 2 and
+nothing written; a mistyped grid key is caught by crumple-sim --print-config before any run.
+
+usage: test_sweep_expand.py CRUMPLE_SIM   (from the repository root)
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+EXPAND = os.path.join(REPO, "pipeline", "sweeps", "expand_sweep.py")
+SIM = None
+
+GOOD = """\
+description: test
+preset: tiny
+protocol: protocols/axial_crumpling.yaml
+set:
+  protocol.cycles: 3
+grid:
+  protocol.stages.compress.compaction: [0.5, 0.27]
+  mesh.nodes: [200, 300]
+seeds: [4, 7]
+"""
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+def expand(text, tmp, sim=False):
+    path = os.path.join(tmp, "s.yaml")
+    with open(path, "w") as f:
+        f.write(text)
+    out = os.path.join(tmp, "runs")
+    cmd = [sys.executable, EXPAND, path, "--out-dir", out, "--results", os.path.join(tmp, "res")]
+    if sim:
+        cmd += ["--sim", SIM]
+    r = subprocess.run(cmd, cwd=REPO, capture_output=True, text=True)
+    return r, path, out
+
+
+class Expand(unittest.TestCase):
+    def test_points_args_and_rules(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            r, _, out = expand(GOOD, tmp, sim=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            doc = json.loads(read(os.path.join(out, "points.json")))
+            pts = doc["points"]
+            self.assertEqual(len(pts), 8)  # 2 x 2 grid values, 2 seeds
+            self.assertEqual(len({p["group"] for p in pts}), 4)
+            self.assertTrue(doc["collapse"])  # the grid varies the compaction
+            p = pts[0]
+            self.assertEqual(p["group"], "compaction-0.5_nodes-200")
+            self.assertEqual(p["seed"], 4)
+            a = p["args"]
+            # The preset's settings first, then the sweep's, then the point's: the last wins.
+            self.assertLess(a.index("protocol.cycles=2"), a.index("protocol.cycles=3"))
+            self.assertLess(a.index("protocol.cycles=3"),
+                            a.index("protocol.stages.compress.compaction=0.5"))
+            self.assertEqual(a[a.index("--seed") + 1], "4")
+            mk = read(os.path.join(out, "points.mk"))
+            self.assertIn(p["run"] + ": " + p["run"] + ".args", mk)
+            self.assertEqual(mk.count("$(ANALYZE) ensemble"), 4)
+            # Argument files are rewritten only when they change.
+            args = p["run"] + ".args"
+            os.utime(args, (1, 1))
+            r, _, _ = expand(GOOD, tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(os.stat(args).st_mtime, 1)
+            r, _, _ = expand(GOOD.replace("protocol.cycles: 3", "protocol.cycles: 4"), tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertNotEqual(os.stat(args).st_mtime, 1)
+
+    def test_bad_sweep_files_name_line_and_key(self):
+        cases = [
+            (GOOD.replace("seeds:", "seedz:"), "s.yaml:9: seedz: unknown key"),
+            (GOOD.replace("preset: tiny", "preset: huge"), "s.yaml:2: preset: no preset 'huge'"),
+            (GOOD.replace("axial_crumpling", "nope"), "s.yaml:3: protocol: no such file"),
+            (GOOD.replace("[4, 7]", "[4, 4]"), "s.yaml:9: seeds: a seed appears twice"),
+            (GOOD.replace("[4, 7]", "[4, x]"), "s.yaml:9: seeds: 'x' is not a seed"),
+            (GOOD.replace("[200, 300]", "300"),
+             "s.yaml:8: grid.mesh.nodes: expected a non-empty list"),
+            ("\n".join(l for l in GOOD.splitlines() if "grid" not in l and "  " not in l),
+             "grid: missing"),
+            ("[1, 2]", "a sweep file is a mapping"),
+            ("grid: [", "not valid YAML"),
+        ]
+        for text, expect in cases:
+            with self.subTest(expect=expect), tempfile.TemporaryDirectory() as tmp:
+                r, path, out = expand(text, tmp)
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertIn(expect, r.stderr)
+                self.assertFalse(os.path.exists(out), "nothing is written")
+
+    def test_a_mistyped_grid_key_is_caught_before_any_run(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            r, _, out = expand(GOOD.replace("mesh.nodes:", "mesh.nodez:"), tmp, sim=True)
+            self.assertEqual(r.returncode, 2, r.stderr)
+            self.assertIn("is not a valid configuration", r.stderr)
+            self.assertIn("mesh.nodez", r.stderr)
+            self.assertFalse(os.path.exists(out))
+
+
+if __name__ == "__main__":
+    SIM = os.path.abspath(sys.argv.pop(1))
+    unittest.main()
