@@ -3,7 +3,6 @@
 BUILD     ?= build
 JOBS      ?= $(shell nproc)
 PRESET    ?= quick
-SEEDS     ?= 1 2 3
 PROTOCOL  ?= protocols/axial_crumpling.yaml
 CMAKE_ARGS ?=
 

@@ -86,3 +86,13 @@ def phi(xi, a):
     k = a * (a + 1.0)
     z = k * np.asarray(xi, dtype=float)
     return np.exp(math.log(k) - math.log(2.0) - gammaln(a) + (a / 2 - 1) * np.log(z) - np.sqrt(z))
+
+
+def sweep_groups(points):
+    """The groups of a sweep's points file (runs/sweeps/NAME/points.json), in the order of the
+    sweep file's grid."""
+    order = []
+    for p in points["points"]:
+        if p["group"] not in order:
+            order.append(p["group"])
+    return order

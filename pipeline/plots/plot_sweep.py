@@ -16,7 +16,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import die, law_constants, load_ensemble, load_json  # noqa: E402
+from common import die, law_constants, load_ensemble, load_json, sweep_groups  # noqa: E402
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
@@ -26,18 +26,11 @@ import numpy as np  # noqa: E402
 KEY = "perimeter_P"
 
 
-def groups_of(points):
-    order = []
-    for p in points["points"]:
-        if p["group"] not in order:
-            order.append(p["group"])
-    return order
-
 
 def crease_length(points, results, out):
     c1, c2 = law_constants()
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    for i, g in enumerate(groups_of(points)):
+    for i, g in enumerate(sweep_groups(points)):
         e = load_ensemble(os.path.join(results, "groups", g, "ensemble.json"))
         n = np.array([r["cycle"] for r in e["cycles"]], float)
         m = np.array([np.nan if r.get(KEY + "_mean") is None else r[KEY + "_mean"]

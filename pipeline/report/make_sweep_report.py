@@ -15,7 +15,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import die, law_constants, load_ensemble, load_json  # noqa: E402
+from common import die, law_constants, load_ensemble, load_json, sweep_groups  # noqa: E402
 from make_report import AGREE_SEM, fmt, pm  # noqa: E402
 
 KEYS = [("perimeter_P", "P (facet perimeters, the experiments' measure)"),
@@ -44,13 +44,6 @@ def c2_undetermined(f):
     return bool(f.get("at_bound")) or not f.get("sigma_c2") or f["sigma_c2"] > f["c2"]
 
 
-def groups_of(points):
-    order = []
-    for p in points["points"]:
-        if p["group"] not in order:
-            order.append(p["group"])
-    return order
-
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
@@ -65,7 +58,7 @@ def main():
             die(f"missing figure {os.path.join(a.results, f)} (run pipeline/plots/plot_sweep.py "
                 "first)")
     c1_exp, c2_exp = law_constants()
-    groups = groups_of(pts)
+    groups = sweep_groups(pts)
     ens = {g: load_ensemble(os.path.join(a.results, "groups", g, "ensemble.json")) for g in groups}
     first = load_json(os.path.join(pts["points"][0]["analysis"], "stats.json"), "stats.json")
     meta = first.get("input", {}).get("meta", {})
