@@ -38,11 +38,14 @@ endif
 sweep-runs: $(SWEEP_RUNS)
 sweep-report: $(SWEEP_RESULTS)/REPORT.md
 
-# The collapse (when the grid varies the compaction), the figures, then the report.
+# The collapse (when the grid varies the compaction), the history test (when the sweep names a
+# test compaction), the figures, then the report.
 $(SWEEP_RESULTS)/REPORT.md: $(SWEEP_ENSEMBLES) $(SWEEP_DIR)/points.json $(ANALYZE) \
     $(wildcard pipeline/plots/*.py pipeline/report/*.py)
 	@mkdir -p $(SWEEP_RESULTS)
 	$(if $(SWEEP_COLLAPSE),$(ANALYZE) collapse -o $(SWEEP_RESULTS)/collapse.json $(SWEEP_ENSEMBLES))
+	$(if $(SWEEP_HISTORY),$(PYTHON) pipeline/sweeps/history_test.py --points $(SWEEP_DIR)/points.json \
+	  --results $(SWEEP_RESULTS) --compaction $(SWEEP_HISTORY))
 	$(PYTHON) pipeline/plots/plot_sweep.py --points $(SWEEP_DIR)/points.json \
 	  --results $(SWEEP_RESULTS)
 	$(PYTHON) pipeline/report/make_sweep_report.py --points $(SWEEP_DIR)/points.json \

@@ -117,7 +117,7 @@ std::string range_text(const ParamSpec& p) {
 
 std::string default_text(const ParamSpec& p) {
   if (p.fallback.empty()) return "required";
-  if (p.kind != ParamSpec::Kind::Number) return p.fallback;
+  if (p.kind != ParamSpec::Kind::Number && p.kind != ParamSpec::Kind::Numbers) return p.fallback;
   const double v = std::stod(p.fallback);
   return v >= 1e30 ? "none (1e30)" : schema::format_number(v);
 }
@@ -141,9 +141,10 @@ std::string StageRegistry::describe_markdown() const {
     }
     os << "\n\n| parameter | type | default | range | meaning |\n|---|---|---|---|---|\n";
     for (const auto& p : t.params) {
-      const char* type = p.kind == ParamSpec::Kind::Number ? "number"
-                         : p.kind == ParamSpec::Kind::Flag ? "bool"
-                                                           : "word";
+      const char* type = p.kind == ParamSpec::Kind::Number    ? "number"
+                         : p.kind == ParamSpec::Kind::Numbers ? "number or list"
+                         : p.kind == ParamSpec::Kind::Flag    ? "bool"
+                                                              : "word";
       os << "| `" << p.name << "` | " << type << " | " << default_text(p) << " | " << range_text(p)
          << " | " << p.help << " |\n";
     }

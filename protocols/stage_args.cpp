@@ -56,6 +56,7 @@ StageArgs::StageArgs(const YAML::Node& node, std::string file, std::string path,
       case ParamSpec::Kind::Number: number(s.name); break;
       case ParamSpec::Kind::Text: text(s.name); break;
       case ParamSpec::Kind::Flag: flag(s.name); break;
+      case ParamSpec::Kind::Numbers: numbers(s.name); break;
     }
   }
 }
@@ -100,15 +101,44 @@ double StageArgs::number(const std::string& key) const {
   } else {
     v = std::stod(s.fallback);
   }
+  check_range(s, key, v, -1);
+  return v;
+}
+
+void StageArgs::check_range(const ParamSpec& s, const std::string& key, double v,
+                            int index) const {
   const bool below = s.min_open ? !(v > s.min) : !(v >= s.min);
   if (below || v > s.max) {
     std::ostringstream os;
+    if (index >= 0) os << "element " << index + 1 << " ";
     os << "must be " << (s.min_open ? "> " : ">= ") << s.min;
     if (std::isfinite(s.max)) os << " and <= " << s.max;
     os << ", got " << v;
     fail(key, os.str());
   }
-  return v;
+}
+
+std::vector<double> StageArgs::numbers(const std::string& key) const {
+  const ParamSpec& s = spec(key);
+  if (!given(key)) {
+    const double v = std::stod(s.fallback);
+    check_range(s, key, v, -1);
+    return {v};
+  }
+  const YAML::Node n = node_[key];
+  if (n.IsScalar()) return {number(key)};
+  if (!n.IsSequence() || n.size() == 0)
+    fail(key, "expected a number or a non-empty list of numbers");
+  std::vector<double> out;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    double v;
+    if (!parse_number(n[i], v))
+      fail(key, "element " + std::to_string(i + 1) + ": expected a number, got '" +
+                    (n[i].IsScalar() ? n[i].Scalar() : std::string("a non-scalar")) + "'");
+    check_range(s, key, v, static_cast<int>(i));
+    out.push_back(v);
+  }
+  return out;
 }
 
 std::string StageArgs::text(const std::string& key) const {

@@ -18,7 +18,9 @@
 namespace crumple {
 
 struct ParamSpec {
-  enum class Kind { Number, Text, Flag };
+  /// Numbers: a number, or a list of numbers (one per cycle, say), each checked against the
+  /// range; read with StageArgs::numbers.
+  enum class Kind { Number, Text, Flag, Numbers };
   std::string name;
   Kind kind = Kind::Number;
   std::string fallback;  ///< default as text; empty: the parameter is required
@@ -42,6 +44,8 @@ class StageArgs {
             const std::vector<ParamSpec>& specs, const StageSets* sets = nullptr);
 
   double number(const std::string& key) const;
+  /// A Numbers parameter: a single number gives a list of one.
+  std::vector<double> numbers(const std::string& key) const;
   std::string text(const std::string& key) const;
   bool flag(const std::string& key) const;
   /// True when the key is given in the file (not defaulted).
@@ -56,6 +60,8 @@ class StageArgs {
 
  private:
   const ParamSpec& spec(const std::string& key) const;
+  /// Fails naming `key` (and the list element `index`, when >= 0) unless v is in s's range.
+  void check_range(const ParamSpec& s, const std::string& key, double v, int index) const;
   YAML::Node node_;
   std::string file_, path_;
   const std::vector<ParamSpec>* specs_;

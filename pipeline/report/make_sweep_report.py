@@ -157,6 +157,48 @@ def main():
             add(f"| {fmt(g['compaction'])} | {cell(fp, 'c1')} | {cell(fp, 'c2')} | "
                 f"{cell(fl, 'c1')} | {cell(fl, 'c2')} |")
         add("")
+    if pts.get("history") is not None:
+        h = load_json(os.path.join(a.results, "history.json"), "history test")
+        add(f"## History independence at D = {h['compaction']:g}\n")
+        add("The experiments found that the crease length a cycle adds depends only on the length "
+            "already there and on that cycle's compaction (docs/STATISTICS.md §2.3). Each row is "
+            f"a cycle crumpled at D = {h['compaction']:g} after a different history; the "
+            f"reference `{h['reference']}` (D = {h['compaction']:g} in every cycle) predicts the "
+            "increment of a sheet with the same length from its own mean curve "
+            "(`pipeline/sweeps/history_test.py`); agreement means within "
+            f"{AGREE_SEM:g} combined standard errors.\n")
+        for note in h.get("notes", []):
+            add(f"- note: {note}")
+        for key, label in KEYS:
+            rows = h["tests"].get(key, [])
+            if not rows:
+                continue
+            add(f"**{label}**\n")
+            add("| group | cycle | history before | length before | added | predicted | "
+                "added / predicted | verdict |")
+            add("| --- | --- | --- | --- | --- | --- | --- | --- |")
+            for r in rows:
+                hist = ", ".join(f"{c:g}" for c in r["history"])
+                if "dl_pred" in r:
+                    verdict_text = (f"{r['verdict']} ({r['z']:.1f} s.e.)" if r["z"] is not None
+                                    else "not judged (no spread)")
+                    add(f"| {r['group']} | {r['cycle']} | {hist} | "
+                        f"{pm(r['l_pre'], r['l_pre_sem'])} | {pm(r['dl'], r['dl_sem'])} | "
+                        f"{pm(r['dl_pred'], r['dl_pred_sem'])} | {fmt(r['ratio'])} | "
+                        f"{verdict_text} |")
+                else:
+                    add(f"| {r['group']} | {r['cycle']} | {hist} | "
+                        f"{pm(r['l_pre'], r['l_pre_sem'])} | {pm(r['dl'], r['dl_sem'])} | – | – | "
+                        f"{r['note']} |")
+            add("")
+        judged = [r for r in h["tests"].get("perimeter_P", []) if r.get("verdict")]
+        if judged:
+            agree = sum(r["verdict"] == "agree" for r in judged)
+            add(f"**In plain words.** On P, {agree} of {len(judged)} history comparisons agree "
+                "with history independence within their errors"
+                + ("." if agree == len(judged) else
+                   "; the others say the added length depends on more than the length already "
+                   "there and the compaction.") + "\n")
     add("## Files\n")
     add("- `groups/GROUP/ensemble.json`: each group's ensemble statistics and fits"
         + ("; `collapse.json`: the global fit and the collapsed points" if pts.get("collapse")

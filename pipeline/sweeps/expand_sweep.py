@@ -29,7 +29,8 @@ import sys
 
 import yaml
 
-KEYS = {"description", "preset", "protocol", "set", "grid", "seeds", "threads", "collapse"}
+KEYS = {"description", "preset", "protocol", "set", "grid", "seeds", "threads", "collapse",
+        "history"}
 REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
 
@@ -74,8 +75,20 @@ def read_preset(path):
             int(threads))
 
 
+def grid_value(path, node, key):
+    """A grid value as --set takes it: a scalar, or a flat list written as YAML's [a,b,c] (a
+    stage parameter that takes one value per cycle, such as compress.compaction)."""
+    if isinstance(node, yaml.SequenceNode):
+        if not node.value or not all(isinstance(x, yaml.ScalarNode) and x.value for x in node.value):
+            fail(path, node, key, "a list value must be a non-empty list of plain values")
+        return "[" + ",".join(x.value for x in node.value) + "]"
+    return scalar_text(path, node, key)
+
+
 def value_name(v):
-    """A grid value as it appears in a folder name."""
+    """A grid value as it appears in a folder name ([0.6,0.27] as 0.6-0.27)."""
+    if v.startswith("[") and v.endswith("]"):
+        v = "-".join(x.strip() for x in v[1:-1].split(","))
     return re.sub(r"[^A-Za-z0-9.+-]", "_", v)
 
 
@@ -127,7 +140,7 @@ def load(path):
     for k, (kn, vn) in mapping(gn).items():
         if not isinstance(vn, yaml.SequenceNode) or not vn.value:
             fail(path, vn, f"grid.{k}", "expected a non-empty list of values")
-        values = [scalar_text(path, x, f"grid.{k}") for x in vn.value]
+        values = [grid_value(path, x, f"grid.{k}") for x in vn.value]
         if len(set(values)) != len(values):
             fail(path, vn, f"grid.{k}", "a value appears twice")
         grid.append({"key": k, "values": values, "line": kn.start_mark.line + 1})
@@ -153,14 +166,26 @@ def load(path):
         if not re.fullmatch(r"[1-9][0-9]*", t):
             fail(path, tn, "threads", f"{t!r} is not a thread count")
         sweep["threads"] = int(t)
-    has_compaction = any(g["key"].endswith(".compaction") for g in grid)
-    sweep["collapse"] = has_compaction
+    # The collapse needs one compaction per group: a grid of constant compaction ratios.
+    sweep["collapse"] = "history" not in top and any(
+        g["key"].endswith(".compaction") and not any(v.startswith("[") for v in g["values"])
+        for g in grid)
     if "collapse" in top:
         cn = top["collapse"][1]
         c = scalar_text(path, cn, "collapse")
         if c not in ("true", "false"):
             fail(path, cn, "collapse", "expected true or false")
         sweep["collapse"] = c == "true"
+    sweep["history"] = None
+    if "history" in top:
+        hn = top["history"][1]
+        h = scalar_text(path, hn, "history")
+        try:
+            sweep["history"] = float(h)
+        except ValueError:
+            sweep["history"] = None
+        if sweep["history"] is None or not 0 < sweep["history"] < 1:
+            fail(path, hn, "history", f"{h!r}: the test compaction, a number in (0, 1)")
     return sweep
 
 
@@ -215,6 +240,7 @@ def make_rules(sweep, pts, out_dir, results):
              f"SWEEP_PRESET := {sweep['preset']}",
              f"SWEEP_PROTOCOL := {sweep['protocol']}",
              f"SWEEP_COLLAPSE := {'yes' if sweep['collapse'] else ''}",
+             f"SWEEP_HISTORY := {sweep['history'] if sweep['history'] is not None else ''}",
              f"SWEEP_RUNS := {' '.join(p['run'] for p in pts)}",
              f"SWEEP_STATS := {' '.join(p['analysis'] + '/stats.json' for p in pts)}"]
     groups = []
@@ -261,7 +287,7 @@ def main():
         os.makedirs(os.path.dirname(p["run"]), exist_ok=True)
         write_if_changed(p["run"] + ".args", " ".join(shlex.quote(x) for x in p["args"]) + "\n")
     doc = {k: sweep[k] for k in ("name", "file", "description", "preset", "protocol", "seeds",
-                                 "threads", "collapse")}
+                                 "threads", "collapse", "history")}
     doc["set"] = [{"key": k, "value": v} for k, v in sweep["set"]]
     doc["grid"] = [{"key": g["key"], "values": g["values"]} for g in sweep["grid"]]
     doc["preset_sets"] = sweep["preset_sets"]

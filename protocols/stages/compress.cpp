@@ -25,7 +25,8 @@ namespace {
 class CompressStage : public Stage {
  public:
   explicit CompressStage(const StageArgs& a)
-      : compaction_(a.number("compaction")),
+      : schedule_(a.numbers("compaction")),
+        compaction_(schedule_.front()),
         speed_(a.number("speed")),
         clearance_(a.number("clearance")),
         close_time_(a.number("close_time")),
@@ -38,6 +39,8 @@ class CompressStage : public Stage {
   std::string type() const override { return "compress"; }
 
   void begin(StageContext& ctx) override {
+    // A list gives one ratio per cycle; cycles beyond its end keep its last value.
+    compaction_ = schedule_[std::min(schedule_.size(), static_cast<std::size_t>(ctx.cycle)) - 1];
     const Apparatus& ap = ctx.apparatus;
     if (!ap.rolled)
       throw InputError("protocol: a compress stage needs a roll stage before it in the cycle");
@@ -130,6 +133,7 @@ class CompressStage : public Stage {
   }
 
  private:
+  std::vector<double> schedule_;
   double compaction_, speed_, clearance_, close_time_, stiffness_, range_, hold_;
   bool retract_;
   double h0_ = 0, t0_ = 0, lo_ = 0, hi_ = 0, reached_ = -1;
@@ -149,8 +153,10 @@ StageType compress_stage_type() {
   t.name = "compress";
   t.help = "compress the rolled sheet along its axis between two pistons in a cylinder";
   t.params = {
-      {"compaction", K::Number, "", "target ratio of final to initial piston gap (0, 1]", 0.0, 1.0,
-       true},
+      {"compaction", K::Numbers, "",
+       "target ratio of final to initial piston gap (0, 1]; a list gives one per cycle (cycle n "
+       "takes element n, later cycles the last), for histories of changing compaction",
+       0.0, 1.0, true},
       {"speed", K::Number, "0.05", "closing speed of the two pistons together (length/s)", 0.0,
        1e30, true},
       {"clearance", K::Number, "0.15", "container radius = (1 + clearance) x roll radius", 0.0},

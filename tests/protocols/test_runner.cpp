@@ -109,6 +109,45 @@ TEST(Stages, CompressStaysInsideAndReachesTheTarget) {
   EXPECT_GE(wmax - wmin, 0.3 * ap.height);  // the sheet fills the gap: it was compressed
 }
 
+// A list of compaction ratios gives one per cycle, the last holding for later cycles: each
+// cycle's pistons close to its own gap, and the stage reports that cycle's ratio.
+TEST(Stages, CompactionListGivesOnePerCycle) {
+  ProtocolRun r(R"([{type: roll, duration: 0.2, axis: fixed}, {type: compress, compaction: [0.6, 0.4],
+             speed: 0.4, retract: false}])");
+  r.go(3);
+  std::vector<double> reported;
+  for (const auto& e : r.sink.stage_ends)
+    if (e.type == "compress") reported.push_back(e.compaction.value_or(-1));
+  EXPECT_EQ(reported, (std::vector<double>{0.6, 0.4, 0.4}));
+  // Each cycle's end state lies between its own pistons (the pistons stay closed: retract off).
+  std::vector<double> extent;
+  for (const auto& e : r.sink.stage_ends) {
+    if (e.type != "compress") continue;
+    double wmin = 1e9, wmax = -1e9;
+    for (Index i = 0; i < r.model->num_nodes(); ++i) {
+      const double w = node(e.state.x, i).dot(r.sink.checkpoints.back().apparatus.axis_dir);
+      wmin = std::min(wmin, w), wmax = std::max(wmax, w);
+    }
+    extent.push_back(wmax - wmin);
+  }
+  ASSERT_EQ(extent.size(), 3u);
+  EXPECT_GT(extent[0], extent[1] * 1.2);  // 0.6 H0 against 0.4 H0
+  // Bad lists are refused with the element named.
+  const auto refuse = [](const std::string& value) {
+    try {
+      StageRegistry::builtin().make(
+          YAML::Load("{type: compress, compaction: " + value + "}"), "t.yaml", "protocol.stages[1]");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(refuse("[0.5, 1.5]").find("compaction: element 2 must be > 0 and <= 1, got 1.5"),
+            std::string::npos);
+  EXPECT_NE(refuse("[0.5, x]").find("element 2: expected a number, got 'x'"), std::string::npos);
+  EXPECT_NE(refuse("[]").find("expected a number or a non-empty list"), std::string::npos);
+}
+
 TEST(Stages, RollAndUnfoldWithoutCompressionMakeNoCrease) {
   ProtocolRun r(R"([{type: roll, duration: 0.2, radius: 0.1}, {type: unfold}])", 0.3);
   // A plastic field inside the yield band of the flat state (|c - p| < c0 throughout).
