@@ -11,6 +11,9 @@ SWEEP_FILE    = pipeline/sweeps/$(SWEEP).yaml
 SWEEP_DIR     = runs/sweeps/$(SWEEP)
 SWEEP_RESULTS = results/$(SWEEP)
 SWEEP_NAMES  := $(notdir $(basename $(wildcard pipeline/sweeps/*.yaml)))
+# SWEEP_SEEDS="1 2": only these of the sweep's seeds (a first part of a long sweep; running
+# without it later reuses every finished run and completes the rest).
+SWEEP_SEEDS  ?=
 # What the second make (or a Slurm job) is given; SWEEP_DIR and SWEEP_RESULTS may be overridden
 # on the command line to keep a sweep elsewhere (the Slurm test does).
 SWEEP_VARS    = SWEEP=$(SWEEP) BUILD=$(BUILD) SWEEP_DIR=$(SWEEP_DIR) SWEEP_RESULTS=$(SWEEP_RESULTS)
@@ -25,7 +28,7 @@ sweep: build
 	@test -n "$(SWEEP)" -a -f "$(SWEEP_FILE)" || { \
 	  echo "make sweep: give SWEEP=NAME, one of: $(SWEEP_NAMES)"; exit 2; }
 	$(PYTHON) pipeline/sweeps/expand_sweep.py $(SWEEP_FILE) --out-dir $(SWEEP_DIR) \
-	  --results $(SWEEP_RESULTS) --sim $(SIM)
+	  --results $(SWEEP_RESULTS) --sim $(SIM) $(if $(strip $(SWEEP_SEEDS)),--seeds $(SWEEP_SEEDS))
 ifeq ($(SCHEDULER),slurm)
 	$(SLURM_SUBMIT) --name sweep-$(SWEEP) --points $(SWEEP_DIR)/points.json --final sweep-report \
 	  --make-vars '$(SWEEP_VARS)' --log-dir $(SWEEP_DIR)/slurm \

@@ -78,6 +78,10 @@ def main():
     add(f"- seeds: {', '.join(str(s) for s in pts['seeds'])}; {len(pts['points'])} runs in "
         f"{len(groups)} groups; program {meta.get('program_version', '?')} "
         f"({meta.get('git_revision', '?')})")
+    rest = [s for s in pts.get("sweep_seeds", pts["seeds"]) if s not in pts["seeds"]]
+    if rest:
+        add(f"- **part of the sweep**: seeds {', '.join(rest)} of the sweep file are not run yet "
+            f"(`SWEEP_SEEDS`); `make sweep SWEEP={pts['name']}` completes it, reusing these runs")
     add("- each run's resolved configuration, seed and program version are in its run file "
         "(`/config`, `/meta`); the runs are listed in "
         f"`{os.path.relpath(a.points, os.path.dirname(a.output) or '.')}`\n")

@@ -273,9 +273,19 @@ def main():
     ap.add_argument("--out-dir", required=True, help="folder of the runs, e.g. runs/sweeps/NAME")
     ap.add_argument("--results", required=True, help="folder of the report, e.g. results/NAME")
     ap.add_argument("--sim", help="crumple-sim, to check each group's configuration")
+    ap.add_argument("--seeds", nargs="+", metavar="SEED",
+                    help="only these of the sweep's seeds (part of a sweep first; the rest later "
+                         "reuses the finished runs; the report names the seeds it used)")
     a = ap.parse_args()
     try:
         sweep = load(a.sweep)
+        sweep["sweep_seeds"] = list(sweep["seeds"])
+        if a.seeds:
+            unknown = [s for s in a.seeds if s not in sweep["seeds"]]
+            if unknown:
+                raise SweepError(f"{a.sweep}: seeds: --seeds {' '.join(unknown)}: not among the "
+                                 f"sweep's seeds ({', '.join(sweep['seeds'])})")
+            sweep["seeds"] = [s for s in sweep["seeds"] if s in a.seeds]
         pts = points(sweep, a.out_dir)
         if a.sim:
             check_with_sim(sweep, pts, a.sim)
@@ -287,7 +297,7 @@ def main():
         os.makedirs(os.path.dirname(p["run"]), exist_ok=True)
         write_if_changed(p["run"] + ".args", " ".join(shlex.quote(x) for x in p["args"]) + "\n")
     doc = {k: sweep[k] for k in ("name", "file", "description", "preset", "protocol", "seeds",
-                                 "threads", "collapse", "history")}
+                                 "sweep_seeds", "threads", "collapse", "history")}
     doc["set"] = [{"key": k, "value": v} for k, v in sweep["set"]]
     doc["grid"] = [{"key": g["key"], "values": g["values"]} for g in sweep["grid"]]
     doc["preset_sets"] = sweep["preset_sets"]

@@ -35,7 +35,7 @@ def read(path):
         return f.read()
 
 
-def expand(text, tmp, sim=False):
+def expand(text, tmp, sim=False, extra=()):
     path = os.path.join(tmp, "s.yaml")
     with open(path, "w") as f:
         f.write(text)
@@ -43,6 +43,7 @@ def expand(text, tmp, sim=False):
     cmd = [sys.executable, EXPAND, path, "--out-dir", out, "--results", os.path.join(tmp, "res")]
     if sim:
         cmd += ["--sim", SIM]
+    cmd += list(extra)
     r = subprocess.run(cmd, cwd=REPO, capture_output=True, text=True)
     return r, path, out
 
@@ -78,6 +79,30 @@ class Expand(unittest.TestCase):
             r, _, _ = expand(GOOD.replace("protocol.cycles: 3", "protocol.cycles: 4"), tmp)
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertNotEqual(os.stat(args).st_mtime, 1)
+
+    def test_a_subset_of_the_seeds_runs_first_and_the_rest_reuses_it(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            r, _, out = expand(GOOD, tmp, extra=["--seeds", "7"])
+            self.assertEqual(r.returncode, 0, r.stderr)
+            doc = json.loads(read(os.path.join(out, "points.json")))
+            self.assertEqual(doc["seeds"], ["7"])
+            self.assertEqual(doc["sweep_seeds"], ["4", "7"])
+            self.assertEqual({p["seed"] for p in doc["points"]}, {7})
+            self.assertEqual(len(doc["points"]), 4)
+            part = {p["run"] for p in doc["points"]}
+            # The whole sweep later names the same run files for seed 7, so they are reused.
+            r, _, out = expand(GOOD, tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            doc = json.loads(read(os.path.join(out, "points.json")))
+            self.assertEqual(len(doc["points"]), 8)
+            self.assertTrue(part <= {p["run"] for p in doc["points"]})
+            # A seed the sweep does not have is refused, nothing written.
+            fresh = os.path.join(tmp, "other")
+            os.makedirs(fresh)
+            r, _, out = expand(GOOD, fresh, extra=["--seeds", "7", "9"])
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("--seeds 9: not among the sweep's seeds (4, 7)", r.stderr)
+            self.assertFalse(os.path.exists(out))
 
     def test_bad_sweep_files_name_line_and_key(self):
         cases = [
