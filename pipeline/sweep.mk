@@ -14,6 +14,9 @@ SWEEP_NAMES  := $(notdir $(basename $(wildcard pipeline/sweeps/*.yaml)))
 # SWEEP_SEEDS="1 2": only these of the sweep's seeds (a first part of a long sweep; running
 # without it later reuses every finished run and completes the rest).
 SWEEP_SEEDS  ?=
+# SWEEP_GROUPS="compaction-0.63 compaction-0.27": only these grid points (named as their run
+# folders), likewise.
+SWEEP_GROUPS ?=
 # What the second make (or a Slurm job) is given; SWEEP_DIR and SWEEP_RESULTS may be overridden
 # on the command line to keep a sweep elsewhere (the Slurm test does).
 SWEEP_VARS    = SWEEP=$(SWEEP) BUILD=$(BUILD) SWEEP_DIR=$(SWEEP_DIR) SWEEP_RESULTS=$(SWEEP_RESULTS)
@@ -28,7 +31,8 @@ sweep: build
 	@test -n "$(SWEEP)" -a -f "$(SWEEP_FILE)" || { \
 	  echo "make sweep: give SWEEP=NAME, one of: $(SWEEP_NAMES)"; exit 2; }
 	$(PYTHON) pipeline/sweeps/expand_sweep.py $(SWEEP_FILE) --out-dir $(SWEEP_DIR) \
-	  --results $(SWEEP_RESULTS) --sim $(SIM) $(if $(strip $(SWEEP_SEEDS)),--seeds $(SWEEP_SEEDS))
+	  --results $(SWEEP_RESULTS) --sim $(SIM) $(if $(strip $(SWEEP_SEEDS)),--seeds $(SWEEP_SEEDS)) \
+	  $(if $(strip $(SWEEP_GROUPS)),--groups $(SWEEP_GROUPS))
 ifeq ($(SCHEDULER),slurm)
 	$(SLURM_SUBMIT) --name sweep-$(SWEEP) --points $(SWEEP_DIR)/points.json --final sweep-report \
 	  --make-vars '$(SWEEP_VARS)' --log-dir $(SWEEP_DIR)/slurm \

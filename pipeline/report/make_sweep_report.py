@@ -82,6 +82,11 @@ def main():
     if rest:
         add(f"- **part of the sweep**: seeds {', '.join(rest)} of the sweep file are not run yet "
             f"(`SWEEP_SEEDS`); `make sweep SWEEP={pts['name']}` completes it, reusing these runs")
+    left = [g for g in pts.get("sweep_groups", []) if g not in groups]
+    if left:
+        add(f"- **part of the sweep**: the groups {', '.join(left)} of the sweep file are not in "
+            f"this report (`SWEEP_GROUPS`); `make sweep SWEEP={pts['name']}` completes it, "
+            "reusing these runs")
     add("- each run's resolved configuration, seed and program version are in its run file "
         "(`/config`, `/meta`); the runs are listed in "
         f"`{os.path.relpath(a.points, os.path.dirname(a.output) or '.')}`\n")

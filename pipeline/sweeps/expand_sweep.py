@@ -276,6 +276,9 @@ def main():
     ap.add_argument("--seeds", nargs="+", metavar="SEED",
                     help="only these of the sweep's seeds (part of a sweep first; the rest later "
                          "reuses the finished runs; the report names the seeds it used)")
+    ap.add_argument("--groups", nargs="+", metavar="GROUP",
+                    help="only these of the sweep's groups (grid points, named as in its run "
+                         "folders, e.g. compaction-0.27); the report names the groups left out")
     a = ap.parse_args()
     try:
         sweep = load(a.sweep)
@@ -287,6 +290,13 @@ def main():
                                  f"sweep's seeds ({', '.join(sweep['seeds'])})")
             sweep["seeds"] = [s for s in sweep["seeds"] if s in a.seeds]
         pts = points(sweep, a.out_dir)
+        sweep["sweep_groups"] = list(dict.fromkeys(p["group"] for p in pts))
+        if a.groups:
+            unknown = [g for g in a.groups if g not in sweep["sweep_groups"]]
+            if unknown:
+                raise SweepError(f"{a.sweep}: grid: --groups {' '.join(unknown)}: not among the "
+                                 f"sweep's groups ({', '.join(sweep['sweep_groups'])})")
+            pts = [p for p in pts if p["group"] in a.groups]
         if a.sim:
             check_with_sim(sweep, pts, a.sim)
     except SweepError as e:
@@ -297,7 +307,7 @@ def main():
         os.makedirs(os.path.dirname(p["run"]), exist_ok=True)
         write_if_changed(p["run"] + ".args", " ".join(shlex.quote(x) for x in p["args"]) + "\n")
     doc = {k: sweep[k] for k in ("name", "file", "description", "preset", "protocol", "seeds",
-                                 "sweep_seeds", "threads", "collapse", "history")}
+                                 "sweep_seeds", "sweep_groups", "threads", "collapse", "history")}
     doc["set"] = [{"key": k, "value": v} for k, v in sweep["set"]]
     doc["grid"] = [{"key": g["key"], "values": g["values"]} for g in sweep["grid"]]
     doc["preset_sets"] = sweep["preset_sets"]

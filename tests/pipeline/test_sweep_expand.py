@@ -104,6 +104,23 @@ class Expand(unittest.TestCase):
             self.assertIn("--seeds 9: not among the sweep's seeds (4, 7)", r.stderr)
             self.assertFalse(os.path.exists(out))
 
+    def test_a_subset_of_the_groups_likewise(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            r, _, out = expand(GOOD, tmp, extra=["--groups", "compaction-0.27_nodes-300"])
+            self.assertEqual(r.returncode, 0, r.stderr)
+            doc = json.loads(read(os.path.join(out, "points.json")))
+            self.assertEqual({p["group"] for p in doc["points"]}, {"compaction-0.27_nodes-300"})
+            self.assertEqual(len(doc["points"]), 2)  # both seeds
+            self.assertEqual(len(doc["sweep_groups"]), 4)
+            rules = read(os.path.join(out, "points.mk"))
+            self.assertNotIn("compaction-0.5_", rules)
+            fresh = os.path.join(tmp, "other")
+            os.makedirs(fresh)
+            r, _, out = expand(GOOD, fresh, extra=["--groups", "compaction-0.9"])
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("--groups compaction-0.9: not among the sweep's groups", r.stderr)
+            self.assertFalse(os.path.exists(out))
+
     def test_bad_sweep_files_name_line_and_key(self):
         cases = [
             (GOOD.replace("seeds:", "seedz:"), "s.yaml:9: seedz: unknown key"),
