@@ -21,7 +21,7 @@ SWEEP_GROUPS ?=
 # on the command line to keep a sweep elsewhere (the Slurm test does).
 SWEEP_VARS    = SWEEP=$(SWEEP) BUILD=$(BUILD) SWEEP_DIR=$(SWEEP_DIR) SWEEP_RESULTS=$(SWEEP_RESULTS)
 
-.PHONY: sweep sweep-runs sweep-report
+.PHONY: sweep sweep-runs sweep-report keep-study
 
 ifneq ($(SWEEP),)
 -include $(SWEEP_DIR)/points.mk
@@ -57,3 +57,9 @@ $(SWEEP_RESULTS)/REPORT.md: $(SWEEP_ENSEMBLES) $(SWEEP_DIR)/points.json $(ANALYZ
 	  --results $(SWEEP_RESULTS)
 	$(PYTHON) pipeline/report/make_sweep_report.py --points $(SWEEP_DIR)/points.json \
 	  --results $(SWEEP_RESULTS) -o $@
+
+# make keep-study SWEEP=NAME: the sweep's report, figures, fits and per-group tables (no runs)
+# into docs/studies/NAME/, to be committed (pipeline/sweeps/keep_study.py).
+keep-study:
+	$(PYTHON) pipeline/sweeps/keep_study.py --points $(SWEEP_DIR)/points.json \
+	  --results $(SWEEP_RESULTS) --out docs/studies/$(SWEEP)

@@ -91,9 +91,17 @@ def collapse(results, out):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--points", required=True, help="runs/sweeps/NAME/points.json")
+    ap.add_argument("--points", help="runs/sweeps/NAME/points.json")
     ap.add_argument("--results", required=True, help="results/NAME")
+    ap.add_argument("--collapse-only", action="store_true",
+                    help="only collapse.png, from RESULTS/collapse.json alone (a study kept in "
+                         "docs/studies/NAME/ without its runs)")
     a = ap.parse_args()
+    if a.collapse_only:
+        collapse(a.results, os.path.join(a.results, "collapse.png"))
+        return
+    if not a.points:
+        die("give --points (or --collapse-only)")
     points = load_json(a.points, "sweep points file")
     crease_length(points, a.results, os.path.join(a.results, "crease_length.png"))
     if points.get("collapse"):

@@ -121,6 +121,40 @@ class Expand(unittest.TestCase):
             self.assertIn("--groups compaction-0.9: not among the sweep's groups", r.stderr)
             self.assertFalse(os.path.exists(out))
 
+    def test_keep_study_keeps_the_report_and_tables_not_the_runs(self):
+        keep = os.path.join(REPO, "pipeline", "sweeps", "keep_study.py")
+        with tempfile.TemporaryDirectory() as tmp:
+            r, _, out = expand(GOOD, tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            res, kept = os.path.join(tmp, "res"), os.path.join(tmp, "kept")
+            run = [sys.executable, keep, "--points", os.path.join(out, "points.json"),
+                   "--results", res, "--out", kept]
+            r = subprocess.run(run, capture_output=True, text=True)  # no report yet
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("no report", r.stderr)
+            doc = json.loads(read(os.path.join(out, "points.json")))
+            for g in {p["group"] for p in doc["points"]}:
+                os.makedirs(os.path.join(res, "groups", g))
+                with open(os.path.join(res, "groups", g, "ensemble.json"), "w") as f:
+                    json.dump({"seeds": [4, 7], "fits": {}, "stages": [], "threshold_sensitivity": {},
+                               "runs": [], "cycles": [
+                        {"cycle": n, "n_runs": 2, "perimeter_P_mean": 10.0 * n,
+                         "perimeter_P_sem": 1.0} for n in (1, 2, 3)]}, f)
+            with open(os.path.join(res, "REPORT.md"), "w") as f:
+                f.write("# Sweep `s`\n\nbody\n")
+            with open(os.path.join(res, "collapse.json"), "w") as f:
+                f.write("{}")
+            r = subprocess.run(run, capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(sorted(os.listdir(kept)), ["REPORT.md", "collapse.json", "groups.csv"])
+            report = read(os.path.join(kept, "REPORT.md"))
+            self.assertTrue(report.startswith("# Sweep `s`\n\n> Kept in the repository"), report)
+            self.assertIn("body", report)
+            rows = [l for l in read(os.path.join(kept, "groups.csv")).splitlines()
+                    if not l.startswith("#")]
+            self.assertEqual(len(rows), 1 + 4 * 3)  # header, 4 groups x 3 cycles
+            self.assertIn(",3,2,4 7,30.0,,1.0,", rows[-1])
+
     def test_bad_sweep_files_name_line_and_key(self):
         cases = [
             (GOOD.replace("seeds:", "seedz:"), "s.yaml:9: seedz: unknown key"),

@@ -1,0 +1,65 @@
+#!/usr/bin/python3
+"""Keeps a sweep's result in the repository without its runs: from results/NAME (make sweep) to
+docs/studies/NAME/, the report and its figures, the fits (collapse.json, history.json, as the
+sweep made them), and groups.csv, each group's per-cycle ensemble table (mean, s.d. and s.e.m.
+over seeds of the crease lengths, P, facet counts, single-triangle fraction and a_fit). The run
+files stay out (they are binary and large); `make sweep SWEEP=NAME` makes them again, and
+`plot_sweep.py --results docs/studies/NAME --collapse-only` redraws the collapse from the JSON.
+
+usage: keep_study.py --points runs/sweeps/NAME/points.json --results results/NAME --out docs/studies/NAME
+"""
+import argparse
+import csv
+import os
+import shutil
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
+from common import die, load_ensemble, load_json, sweep_groups  # noqa: E402
+
+QUANTITIES = ("perimeter_P", "crease_length_L0", "new_crease_length_L0", "n_facets",
+              "single_triangle_fraction", "a_fit", "dangling_fraction")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--points", required=True)
+    ap.add_argument("--results", required=True)
+    ap.add_argument("--out", required=True)
+    a = ap.parse_args()
+    pts = load_json(a.points, "sweep points file")
+    if not os.path.isfile(os.path.join(a.results, "REPORT.md")):
+        die(f"{a.results}/REPORT.md: no report (run make sweep SWEEP={pts.get('name', 'NAME')} first)")
+    os.makedirs(a.out, exist_ok=True)
+    kept = []
+    for f in ("collapse.json", "history.json", "crease_length.png", "collapse.png"):
+        if os.path.isfile(os.path.join(a.results, f)):
+            shutil.copyfile(os.path.join(a.results, f), os.path.join(a.out, f))
+            kept.append(f)
+    with open(os.path.join(a.results, "REPORT.md")) as f:
+        lines = f.read().split("\n")
+    note = (f"> Kept in the repository by `make keep-study SWEEP={pts['name']}` from "
+            f"`{os.path.relpath(a.results)}` (runs and ensembles not kept; `groups.csv` holds each "
+            f"group's per-cycle table). Paths below are relative to that folder.\n")
+    with open(os.path.join(a.out, "REPORT.md"), "w") as f:
+        f.write("\n".join(lines[:1] + ["", note] + lines[1:]))
+    kept.append("REPORT.md")
+    cols = ["group", "compaction", "cycle", "n_runs", "seeds"] + [
+        f"{q}_{s}" for q in QUANTITIES for s in ("mean", "std", "sem")]
+    with open(os.path.join(a.out, "groups.csv"), "w", newline="") as f:
+        f.write(f"# sweep {pts['name']} ({pts['file']}), preset {pts['preset']}, seeds "
+                f"{' '.join(str(s) for s in pts['seeds'])}: per group and cycle, over seeds\n")
+        w = csv.writer(f)
+        w.writerow(cols)
+        for g in sweep_groups(pts):
+            e = load_ensemble(os.path.join(a.results, "groups", g, "ensemble.json"))
+            seeds = " ".join(str(s) for s in e.get("seeds", []))
+            for row in e["cycles"]:
+                w.writerow([g, row.get("compaction"), row["cycle"], row.get("n_runs"), seeds] +
+                           [row.get(c) for c in cols[5:]])
+    kept.append("groups.csv")
+    print(f"keep_study: {a.out}: {', '.join(kept)}")
+
+
+if __name__ == "__main__":
+    main()
