@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Single-fold calibration of the yield curvature (paper Fig. 3b) from crumple-sim run files of
+"""Single-fold calibration of the yield (paper Fig. 3b) from crumple-sim run files of
 protocols/single_fold.yaml.
 
 For each run: the angle theta_f between the mean normals of the two flaps (the triangles beyond
@@ -8,7 +8,9 @@ paper's collapse variable x = beta (c0 - alpha), alpha = 0.05, beta = 0.04 lambd
 lambda = sqrt(n / A) and the sheet side as the length unit. A line is fitted to all runs with
 c_f >= 0.5 (the range of the paper's figure); the residual measures the collapse across
 resolutions. The offset alpha that collapses this project's runs best is reported beside the
-paper's.
+paper's. c0 is the hinge yield the run used (its stored integrator.plastic_c0, which a run with
+material.yield_radius derived on its mesh, docs/MODEL.md §7.5). Runs with a yield radius are
+also compared at equal radius across resolutions: one material should keep one fold.
 
 usage: fold_calibration.py -o results/calibration runs/calibration/fold_*.h5
 """
@@ -76,7 +78,9 @@ def measure(path):
     area = 0.5 * np.abs(np.cross(ref[tri[:, 1]] - ref[tri[:, 0]], ref[tri[:, 2]] - ref[tri[:, 0]])[:, 2]).sum()
     lam = math.sqrt(n / (area / side ** 2))
     c0 = float(cfg["integrator"]["plastic_c0"])
+    r_y = cfg.get("material", {}).get("yield_radius")
     return dict(run=os.path.basename(path), nodes=n, prov=prov, lam=lam, c0=c0, lam_c0=lam * c0,
+                r_y_mm=None if r_y is None else 1e3 * float(r_y),
                 theta_deg=math.degrees(theta), c_f=2 * math.sin(theta / 2))
 
 
@@ -86,6 +90,18 @@ def provenance(rows):
         return ", ".join(sorted({r["prov"][key] for r in rows}))
     return (f"crumple-sim {values('program_version')} (git {values('git_revision')}), "
             f"seeds {values('seed')}")
+
+
+def spread_at_equal_radius(rows):
+    """For each yield radius run at two or more resolutions: (R_y in mm, [(nodes, c_f)], the
+    largest difference of c_f between them)."""
+    out = []
+    for r_y in sorted({r["r_y_mm"] for r in rows if r["r_y_mm"] is not None}):
+        pts = [(r["nodes"], r["c_f"]) for r in rows if r["r_y_mm"] == r_y]
+        if len({n for n, _ in pts}) >= 2:
+            cf = [c for _, c in pts]
+            out.append((r_y, pts, max(cf) - min(cf)))
+    return out
 
 
 def line_fit(x, y):
@@ -117,9 +133,11 @@ def main():
     with open(os.path.join(args.output, "fold_calibration.csv"), "w", newline="") as f:
         f.write(f"# {provenance(rows)}\n")
         w = csv.writer(f)
-        w.writerow(["run", "nodes", "lambda", "c0", "lambda_c0", "theta_f_deg", "c_f", "x"])
+        w.writerow(["run", "nodes", "lambda", "yield_radius_mm", "c0", "lambda_c0", "theta_f_deg",
+                    "c_f", "x"])
         for r in rows:
-            w.writerow([r["run"], r["nodes"], f"{r['lam']:.3f}", r["c0"], f"{r['lam_c0']:.3f}",
+            r_y = "" if r["r_y_mm"] is None else f"{r['r_y_mm']:g}"
+            w.writerow([r["run"], r["nodes"], f"{r['lam']:.3f}", r_y, f"{r['c0']:.6g}", f"{r['lam_c0']:.3f}",
                         f"{r['theta_deg']:.2f}", f"{r['c_f']:.4f}", f"{r['x']:.4f}"])
 
     fig, ax = plt.subplots(1, 2, figsize=(10, 4))
@@ -127,14 +145,22 @@ def main():
         rr = [r for r in rows if r["nodes"] == n]
         lab = f"n = {n} (lambda = {rr[0]['lam']:.1f})"
         ax[0].plot([r["x"] for r in rr], [r["c_f"] for r in rr], "o", label=lab)
-        ax[1].plot([r["c0"] for r in rr], [r["c_f"] for r in rr], "o-", label=lab)
+        if all(r["r_y_mm"] is not None for r in rows):
+            ax[1].plot([r["r_y_mm"] for r in rr], [r["c_f"] for r in rr], "o-", label=lab)
+        else:
+            ax[1].plot([r["c0"] for r in rr], [r["c_f"] for r in rr], "o-", label=lab)
     xl = np.linspace(0, max(r["x"] for r in rows), 50)
     ax[0].plot(xl, a + b * xl, "k--", lw=1, label=f"fit c_f >= {CF_MIN}: {a:.2f} {b:+.2f} x")
     ax[0].set_xlabel("beta (c0 - alpha),  alpha = 0.05, beta = 0.04 lambda")
     ax[0].set_ylabel("c_f = 2 sin(theta_f / 2)")
     ax[0].set_title("collapse variables (paper Fig. 3b)")
-    ax[1].set_xlabel("yield curvature c0")
-    ax[1].set_title("the same runs against c0")
+    if all(r["r_y_mm"] is not None for r in rows):
+        ax[1].set_xscale("log")
+        ax[1].set_xlabel("yield radius R_y (mm)")
+        ax[1].set_title("the same runs against the sheet's yield radius")
+    else:
+        ax[1].set_xlabel("yield curvature c0")
+        ax[1].set_title("the same runs against c0")
     for axis in ax:
         axis.set_ylim(0, 2.05)
         axis.grid(alpha=0.3)
@@ -143,19 +169,29 @@ def main():
     fig.savefig(os.path.join(args.output, "fold_calibration.png"), dpi=120)
 
     with open(os.path.join(args.output, "FOLD_CALIBRATION.md"), "w") as f:
-        f.write("# Single-fold calibration of the yield curvature (paper Fig. 3b)\n\n")
+        f.write("# Single-fold calibration of the yield (paper Fig. 3b)\n\n")
         f.write("Protocol `protocols/single_fold.yaml`; theta_f is the angle between the flaps' "
                 "normals after the release, c_f = 2 sin(theta_f / 2), x = beta (c0 - alpha) with "
                 "alpha = 0.05, beta = 0.04 lambda, lambda = sqrt(n/A) (sheet side = 1).\n\n")
         f.write("![fold calibration](fold_calibration.png)\n\n")
-        f.write("| nodes | lambda | c0 | lambda c0 | theta_f (deg) | c_f | x |\n|---|---|---|---|---|---|---|\n")
+        f.write("| nodes | lambda | R_y (mm) | c0 | lambda c0 | theta_f (deg) | c_f | x |\n"
+                "|---|---|---|---|---|---|---|---|\n")
         for r in rows:
-            f.write(f"| {r['nodes']} | {r['lam']:.1f} | {r['c0']:g} | {r['lam_c0']:.2f} | "
+            r_y = "-" if r["r_y_mm"] is None else f"{r['r_y_mm']:g}"
+            f.write(f"| {r['nodes']} | {r['lam']:.1f} | {r_y} | {r['c0']:.4g} | {r['lam_c0']:.2f} | "
                     f"{r['theta_deg']:.1f} | {r['c_f']:.3f} | {r['x']:.3f} |\n")
         f.write(f"\nLine through the {len(sel)} runs with c_f >= {CF_MIN}: c_f = {a:.3f} {b:+.3f} x, "
                 f"RMS residual {rms:.3f}.\n")
         f.write(f"The offset alpha that collapses these runs best: {best:.3f} "
                 f"(RMS residual {min(scores):.3f}); the paper's alpha is {ALPHA}.\n")
+        spread = spread_at_equal_radius(rows)
+        if spread:
+            f.write("\nOne yield radius, several resolutions (c_f at each; one material should "
+                    "keep one fold):\n\n| R_y (mm) | c_f by node count | largest difference |\n"
+                    "|---|---|---|\n")
+            for r_y, pts, d in spread:
+                cells = ", ".join(f"{c:.3f} ({n})" for n, c in sorted(pts))
+                f.write(f"| {r_y:g} | {cells} | {d:.3f} |\n")
         f.write(f"\nRuns: {provenance(rows)}.\n")
     print(f"fold calibration: {len(rows)} runs, c_f = {a:.3f} {b:+.3f} x (c_f >= {CF_MIN}), "
           f"RMS {rms:.3f}; best alpha {best:.3f} (RMS {min(scores):.3f})")

@@ -98,7 +98,7 @@ Params load_run(const Options& o, const std::string& tmp, RunRecord& rec,
   r.changes = changes;
   rec.resumes.push_back(r);
   if (!changes.empty()) {
-    rec.config = resolved_yaml(given);  // the configuration in force from here on
+    rec.config = resolved_yaml(resolved_for_mesh(given, rec.mesh));  // in force from here on
     if (!o.quiet)
       for (const auto& c : changes)
         std::fprintf(stderr, "crumple-sim: on resume at t = %g s: %s\n", r.t, c.c_str());
@@ -113,12 +113,15 @@ int print_config(const Options& o) {
   std::optional<Checkpoint> resume;
   const Params p = load_run(o, "", rec, resume);
   validate_protocol(p, StageRegistry::builtin());
+  if (p.material.yield_radius > 0)
+    std::printf("# integrator.plastic_c0 below is not used: a run sets it on its mesh from "
+                "material.yield_radius (the run file stores the value)\n");
   std::printf("%s", resolved_yaml(p).c_str());
   return kExitOk;
 }
 
 /// The mesh, the model constants and the contact setup, as the run starts.
-void print_setup(const Mesh& mesh, const Simulation& run) {
+void print_setup(const Mesh& mesh, const Params& p, const Simulation& run) {
   const MeshQuality q = mesh_quality(mesh);
   const ResolvedMaterial& mat = run.material();
   std::fprintf(stderr,
@@ -127,6 +130,9 @@ void print_setup(const Mesh& mesh, const Simulation& run) {
                kVersion, kGitRevision, mesh.shape.c_str(), mesh.num_nodes(), mesh.num_triangles(),
                q.min_angle_deg, q.edge_cv, mat.model.ks, mat.model.kb, mat.model.mass, mat.h_eff,
                mat.model.b_iso, mat.model.b_int);
+  if (p.material.yield_radius > 0)
+    std::fprintf(stderr, "  yield: c0 %.4g from the yield radius %.4g m over a mean hinge width %.4g m\n",
+                 p.integrator.plastic_c0, p.material.yield_radius, mean_hinge_width(mesh));
   if (!run.contact()) return;
   if (run.contact_range_raised())
     std::fprintf(stderr, "  contact: mesh too coarse to resolve h_eff; range raised to half an edge\n");
@@ -162,19 +168,21 @@ int run(const Options& o) {
   const std::string tmp = o.output + ".tmp";
   RunRecord rec;
   std::optional<Checkpoint> resume_from;
-  const Params p = load_run(o, tmp, rec, resume_from);
+  const Params given = load_run(o, tmp, rec, resume_from);
   const auto& registry = StageRegistry::builtin();
-  validate_protocol(p, registry);
-  const OutputPaths paths = check_output_paths(o.output, p.output.xdmf, o.resume, o.force);
+  validate_protocol(given, registry);
+  const OutputPaths paths = check_output_paths(o.output, given.output.xdmf, o.resume, o.force);
 
   if (o.threads > 0) omp_set_num_threads(o.threads);
   if (!resume_from) {
     rec = RunRecord{};
-    rec.mesh = generate_mesh(p.mesh);
-    rec.config = resolved_yaml(p);
+    rec.mesh = generate_mesh(given.mesh);
     rec.meta.start_time = utc_now();
   }
   const Mesh& mesh = rec.mesh;
+  // What depends on the mesh (the yield curvature of a yield radius) resolved, as stored.
+  const Params p = resolved_for_mesh(given, mesh);
+  if (!resume_from) rec.config = resolved_yaml(p);
   Simulation run(p, mesh, registry, o.quiet, stop_requested);
   const ResolvedMaterial& mat = run.material();
   rec.meta.program_version = kVersion;
@@ -184,7 +192,7 @@ int run(const Options& o) {
   rec.meta.status = "running";
   rec.meta.ks = mat.model.ks, rec.meta.kb = mat.model.kb, rec.meta.mass = mat.model.mass;
   rec.meta.h_eff = mat.h_eff;
-  if (!o.quiet) print_setup(mesh, run);
+  if (!o.quiet) print_setup(mesh, p, run);
 
   Integrator& integ = run.integrator();
   const SelfContact* contact = run.contact();

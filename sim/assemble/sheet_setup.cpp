@@ -1,7 +1,13 @@
 // The physics rules of a run's setup (sheet_setup.hpp).
 #include "sim/assemble/sheet_setup.hpp"
 
+#include "sim/core/errors.hpp"
+#include "sim/mesh/quality.hpp"
+
 #include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
 #include <string>
 
 namespace crumple {
@@ -26,6 +32,34 @@ ContactSettings contact_settings(const ContactParams& c, const Mesh& mesh,
   cs.level = c.refinement == "auto" ? -1 : std::stoi(c.refinement);
   cs.skin = c.skin;
   return cs;
+}
+
+double plastic_c0(const Params& p, const Mesh& mesh) {
+  const double r_y = p.material.yield_radius;
+  if (r_y <= 0) return p.integrator.plastic_c0;
+  const double w = mean_hinge_width(mesh);
+  const double theta = w / r_y;
+  if (!(theta < std::numbers::pi)) {
+    std::ostringstream os;
+    os << p.where("material.yield_radius") << ": " << r_y
+       << " m is smaller than this mesh's mean hinge width over pi (" << w / std::numbers::pi
+       << " m): a hinge would have to fold through itself to yield";
+    throw InputError(os.str());
+  }
+  return 2.0 * std::sin(theta / 2.0);
+}
+
+IntegratorSettings integrator_settings(const Params& p, const Mesh& mesh) {
+  IntegratorSettings s = p.integrator;
+  s.plastic_c0 = plastic_c0(p, mesh);
+  return s;
+}
+
+Params resolved_for_mesh(Params p, const Mesh& mesh) {
+  if (p.material.yield_radius <= 0) return p;
+  p.integrator.plastic_c0 = plastic_c0(p, mesh);
+  p.c0_from_mesh = true;
+  return p;
 }
 
 RunnerSettings runner_settings(const Params& p) {

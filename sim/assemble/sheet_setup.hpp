@@ -23,6 +23,21 @@ SheetInfo sheet_info(const Mesh& mesh, const ResolvedMaterial& material, double 
 ContactSettings contact_settings(const ContactParams& c, const Mesh& mesh,
                                  const ResolvedMaterial& material, bool* raised = nullptr);
 
+/// The hinge yield curvature c0 (paper eq. 19, in units of 2 sin(theta/2)) of a run on `mesh`:
+/// integrator.plastic_c0, or, when material.yield_radius R_y is set, the curvature of a hinge of
+/// the mesh's mean width w (mean_hinge_width) bent about its edge to the radius R_y,
+/// c0 = 2 sin(w / (2 R_y)). A yield radius is a property of the sheet; c0 is per hinge and so
+/// per mesh: R_y = 8.1 mm is c0 = 0.30 on the 10 cm sheet at 1500 nodes and 0.105 at 12000
+/// (docs/MODEL.md §7.5). Throws InputError when R_y is so small that w / R_y >= pi.
+double plastic_c0(const Params& p, const Mesh& mesh);
+
+/// The integrator's settings of a run on `mesh` (plastic_c0 as above).
+IntegratorSettings integrator_settings(const Params& p, const Mesh& mesh);
+
+/// `p` with integrator.plastic_c0 resolved on `mesh`: the configuration a run stores, so that
+/// readers of the run file find the c0 it ran with.
+Params resolved_for_mesh(Params p, const Mesh& mesh);
+
 /// The runner's settings from the protocol and output sections and the mesh seed.
 RunnerSettings runner_settings(const Params& p);
 

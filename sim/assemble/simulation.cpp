@@ -25,7 +25,7 @@ Simulation::Simulation(const Params& p, const Mesh& mesh, const StageRegistry& r
       contact_settings_(crumple::contact_settings(p.contact, mesh, material_, &raised_)),
       contact_(make_contact(p, mesh, model_, contact_settings_)),
       contact_on_(contact_ != nullptr),
-      integ_(model_, p.integrator),
+      integ_(model_, integrator_settings(p, mesh)),
       stepper_(integ_) {
   if (contact_)
     // True when a re-search found a pair in range that the old list lacked: the explicit

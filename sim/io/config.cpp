@@ -326,6 +326,24 @@ Params parse(YAML::Node root, Context& ctx) {
   return p;
 }
 
+/// The schema's integrator.plastic_c0, which material.yield_radius sets on each mesh.
+const schema::Key* yield_derived_key() {
+  static const schema::Key* key = [] {
+    for (const auto& cs : config_schema())
+      if (cs.section->name == "integrator") return cs.section->find("plastic_c0");
+    return static_cast<const schema::Key*>(nullptr);
+  }();
+  return key;
+}
+
+/// material.yield_radius sets integrator.plastic_c0 on each mesh; both given is a contradiction.
+void check_yield_given_once(const Params& p) {
+  if (p.material.yield_radius <= 0 || !p.origins.count("integrator.plastic_c0")) return;
+  throw InputError(p.where("integrator.plastic_c0") + ": given together with material.yield_radius (" +
+                   p.origins.at("material.yield_radius") +
+                   "), which sets it on each mesh; give one of the two");
+}
+
 Params load_from(const std::string& text, const std::string& name,
                  const std::vector<std::string>& overrides) {
   Context ctx;
@@ -351,6 +369,7 @@ Params load_from(const std::string& text, const std::string& name,
   else
     p.protocol.stages_source = name;
   p.protocol.stage_sets = std::move(ctx.stage_sets);
+  check_yield_given_once(p);
   return p;
 }
 
@@ -389,12 +408,17 @@ Params load_stored_config(const std::string& text, const std::string& name) {
     return load_from(text, name, {});  // reports the syntax error with its place
   }
   bool dropped = false;
-  for (const auto& [dotted, why] : retired_keys()) {
+  const auto drop = [&](const std::string& dotted) {
     const auto dot = dotted.find('.');
     YAML::Node section = root[dotted.substr(0, dot)];
     if (section.IsMap() && section[dotted.substr(dot + 1)])
       dropped = section.remove(dotted.substr(dot + 1)) || dropped;
-  }
+  };
+  for (const auto& [dotted, why] : retired_keys()) drop(dotted);
+  // A run with a yield radius stores the plastic_c0 it derived on its mesh, for readers; as
+  // input the two contradict each other (check_yield_given_once), so the derived one goes.
+  if (root.IsMap() && root["material"].IsMap() && root["material"]["yield_radius"])
+    drop("integrator.plastic_c0");
   if (!dropped) return load_from(text, name, {});
   YAML::Emitter e;
   e.SetDoublePrecision(17);
@@ -415,6 +439,10 @@ std::string resolved_yaml(const Params& p) {
         continue;
       }
       if (k.zero_is_unset && k.get_number(values) == 0) continue;
+      // With a yield radius, plastic_c0 is known only on a mesh: a run stores the value it
+      // derived (Params::c0_from_mesh); a configuration not yet on a mesh leaves it out, so that
+      // it reads back as it was given.
+      if (&k == yield_derived_key() && p.material.yield_radius > 0 && !p.c0_from_mesh) continue;
       e << YAML::Key << k.name << YAML::Value;
       switch (k.kind) {
         case schema::Kind::Real: e << k.get_number(values); break;

@@ -54,6 +54,10 @@ Section material_section() {
           .means("isotropic drag b_iso = ratio sqrt(ks m) (eq. 8)"),
       real("internal_damping_ratio", &S::internal_damping_ratio).at_least(0)
           .means("dashpots b_int = ratio sqrt(ks m) (eq. 9)"),
+      real("yield_radius", &S::yield_radius).above(0).units("m")
+          .unset_when_zero().shown_default("unset: integrator.plastic_c0")
+          .means("yield radius of curvature: sets integrator.plastic_c0 on each mesh to "
+                 "2 sin(w / (2 R_y)), w the mean hinge width (docs/MODEL.md §7.5)"),
   };
   s.all_or_none = {"ks", "kb", "mass"};
   return s;

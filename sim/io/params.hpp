@@ -27,6 +27,10 @@ struct MaterialParams {
   double mass_scale = 1e4;       ///< multiplies the node mass (quasistatic mass scaling)
   double drag_ratio = 0.01;      ///< b_iso = drag_ratio sqrt(ks m)
   double internal_damping_ratio = 0.1;  ///< b_int = ratio sqrt(ks m)
+  /// Yield radius of curvature R_y (m): the sheet yields where it is bent tighter than R_y. Set,
+  /// it fixes integrator.plastic_c0 on each mesh (sim/assemble/sheet_setup.hpp); 0: unset, the
+  /// yield is integrator.plastic_c0 as given.
+  double yield_radius = 0;
 };
 
 struct ContactParams {
@@ -62,6 +66,9 @@ struct Params {
   ProtocolParams protocol;
   OutputParams output;
   std::string file;              ///< the config's path (for messages)
+  /// True once integrator.plastic_c0 holds the value material.yield_radius gives on the run's
+  /// mesh (sim/assemble/sheet_setup.hpp, resolved_for_mesh); resolved_yaml then writes it.
+  bool c0_from_mesh = false;
   /// Where each key the input gave was set: dotted key -> "FILE:LINE:COL" or "--set key=value"
   /// (for messages about relations checked after loading). Keys left at their default are absent.
   std::map<std::string, std::string> origins;

@@ -42,6 +42,14 @@ MeshQuality mesh_quality(const Mesh& mesh) {
   return q;
 }
 
+double mean_hinge_width(const Mesh& mesh) {
+  if (mesh.hinges.empty()) return 0.0;
+  double sum = 0.0;
+  for (const Hinge& h : mesh.hinges)
+    sum += (mesh.triangle_area(h.tris[0]) + mesh.triangle_area(h.tris[1])) / mesh.rest_length[h.edge];
+  return sum / static_cast<double>(mesh.hinges.size());
+}
+
 double mean_index_gap(const Mesh& mesh) {
   if (mesh.edges.empty()) return 0.0;
   double s = 0.0;

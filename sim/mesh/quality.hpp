@@ -19,6 +19,13 @@ struct MeshQuality {
 /// Quality figures of the reference (flat) state of `mesh`.
 MeshQuality mesh_quality(const Mesh& mesh);
 
+/// Mean hinge width: over the hinges, the mean of half the sum of the two triangles' altitudes
+/// onto the hinge edge, w = (A1 + A2) / |e|. Two flat triangles inscribed in a cylinder of
+/// radius R whose axis runs along their common edge meet at the angle w / R (each one's normal
+/// points at the middle of its span across the axis), so w turns a physical radius of curvature
+/// into a hinge curvature (the yield radius, docs/MODEL.md §7.5). 0 without hinges.
+double mean_hinge_width(const Mesh& mesh);
+
 /// Mean |i - j| over the edges (i, j): small when neighbours have nearby indices.
 double mean_index_gap(const Mesh& mesh);
 

@@ -1,10 +1,17 @@
 // The physics rules of a run's setup (sim/assemble/sheet_setup.hpp): the contact range is h_eff
 // where the mesh resolves it and half an edge where it does not; the config's explicit values
-// win; the stages see the resolved material.
+// win; the stages see the resolved material; a yield radius becomes the yield curvature of
+// each mesh's hinges.
 #include "sim/assemble/sheet_setup.hpp"
+#include "sim/core/errors.hpp"
 #include "sim/mesh/generate.hpp"
+#include "sim/mesh/quality.hpp"
+#include "sim/model/hinge_geometry.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
 
 using namespace crumple;
 
@@ -65,4 +72,81 @@ TEST(SheetInfo, CarriesTheResolvedMaterial) {
   EXPECT_EQ(info.kb, mat.model.kb);
   EXPECT_EQ(info.mass, mat.model.mass);
   EXPECT_EQ(info.spacing, mesh.mean_edge_length());
+}
+
+// ---- the yield radius (docs/MODEL.md §7.5) ---------------------------------------------------
+
+namespace {
+
+/// The flat sheet wrapped onto a cylinder of radius r whose axis runs along y.
+VecX wrapped_on_cylinder(const Mesh& mesh, double r) {
+  VecX x = mesh.ref_flat();
+  for (Index i = 0; i < mesh.num_nodes(); ++i) {
+    const double u = mesh.ref(0, i);
+    x[3 * i] = r * std::sin(u / r);
+    x[3 * i + 2] = r * (1.0 - std::cos(u / r));
+  }
+  return x;
+}
+
+/// Mean |c| over the hinges whose edge lies within 10 degrees of the y axis (the cylinder's).
+double mean_aligned_curvature(const Mesh& mesh, const VecX& x) {
+  double sum = 0;
+  int count = 0;
+  const auto at = [&](Index i) { return Vec3(x.segment<3>(3 * i)); };
+  for (const Hinge& h : mesh.hinges) {
+    const Vec3 e = mesh.ref.col(h.nodes[1]) - mesh.ref.col(h.nodes[0]);
+    if (std::abs(e.y()) < std::cos(10.0 * M_PI / 180.0) * e.norm()) continue;
+    sum += std::abs(hinge_curvature(at(h.nodes[0]), at(h.nodes[1]), at(h.nodes[2]), at(h.nodes[3])));
+    ++count;
+  }
+  return sum / count;
+}
+
+}  // namespace
+
+TEST(YieldRadius, BendingTheSheetToItBringsTheHingesAlongTheBendToC0) {
+  // The defining property of the conversion, on two meshes of the same sheet: wrapped on a
+  // cylinder of radius R_y, the hinges along the cylinder's axis (bent about their own edge)
+  // reach c0 on average, while c0 itself halves when the node spacing halves.
+  Params p;
+  p.material.yield_radius = 0.005;
+  std::vector<double> c0s;
+  for (int nodes : {1500, 6000}) {
+    const Mesh mesh = generate_mesh(MeshSpec{"square", 0.1, nodes, 1});
+    const double c0 = plastic_c0(p, mesh);
+    const double c = mean_aligned_curvature(mesh, wrapped_on_cylinder(mesh, p.material.yield_radius));
+    std::printf("yield radius %.1f mm, %d nodes: c0 %.4f, mean |c| of the hinges along the bend %.4f\n",
+                1e3 * p.material.yield_radius, nodes, c0, c);
+    EXPECT_NEAR(c / c0, 1.0, 0.05) << nodes << " nodes";
+    c0s.push_back(c0);
+  }
+  EXPECT_NEAR(c0s[0] / c0s[1], 2.0, 0.1);
+}
+
+TEST(YieldRadius, UnsetLeavesTheConfiguredC0AndTooSmallIsRefused) {
+  const Mesh mesh = generate_mesh(MeshSpec{"square", 0.1, 400, 1});
+  Params p;
+  p.integrator.plastic_c0 = 0.37;
+  EXPECT_EQ(plastic_c0(p, mesh), 0.37);
+  EXPECT_EQ(integrator_settings(p, mesh).plastic_c0, 0.37);
+  const Params same = resolved_for_mesh(p, mesh);
+  EXPECT_EQ(same.integrator.plastic_c0, 0.37);
+  EXPECT_FALSE(same.c0_from_mesh);
+  // c0 = 2 sin(w / (2 R_y)) with w the mean hinge width.
+  p.material.yield_radius = 0.01;
+  const double w = mean_hinge_width(mesh);
+  EXPECT_NEAR(plastic_c0(p, mesh), 2 * std::sin(w / 0.02), 1e-15);
+  const Params resolved = resolved_for_mesh(p, mesh);
+  EXPECT_TRUE(resolved.c0_from_mesh);
+  EXPECT_EQ(resolved.integrator.plastic_c0, plastic_c0(p, mesh));
+  EXPECT_EQ(integrator_settings(p, mesh).plastic_c0, plastic_c0(p, mesh));
+  // A radius below w / pi would ask a hinge to fold through itself before it yields.
+  p.material.yield_radius = 0.9 * w / M_PI;
+  try {
+    plastic_c0(p, mesh);
+    FAIL() << "a yield radius below w / pi was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("material.yield_radius"), std::string::npos) << e.what();
+  }
 }

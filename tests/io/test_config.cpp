@@ -235,3 +235,39 @@ TEST(Config, StageParametersBySet) {
                                                     "protocol.stages=[{type: roll}]"});
   EXPECT_TRUE(s.protocol.stage_sets.empty());
 }
+
+TEST(Config, YieldRadiusAndPlasticC0AreNotBothGiven) {
+  // The yield radius sets c0 on each mesh: giving both is refused, naming both places.
+  const std::string e = error_of("material: {yield_radius: 0.005}\nintegrator: {plastic_c0: 0.3}\n");
+  EXPECT_TRUE(starts(e, "c.yaml:2:26: integrator.plastic_c0: given together with material.yield_radius"))
+      << e;
+  EXPECT_NE(e.find("material.yield_radius (c.yaml:1:26), which sets it"), std::string::npos) << e;
+  const std::string by_set = error_of("integrator: {plastic_c0: 0.3}\n", {"material.yield_radius=0.005"});
+  EXPECT_NE(by_set.find("--set material.yield_radius=0.005"), std::string::npos) << by_set;
+  EXPECT_NE(error_of("material: {yield_radius: 0}\n").find("material.yield_radius: must be > 0"),
+            std::string::npos);
+  // Alone, it loads; the configuration printed before a mesh is known leaves c0 out and reads
+  // back the same.
+  const Params p = load_config_text(
+      "material: {yield_radius: 0.005}\nprotocol:\n  stages:\n    - {type: roll, duration: 0.1}\n",
+      "c.yaml");
+  EXPECT_EQ(p.material.yield_radius, 0.005);
+  const std::string y = resolved_yaml(p);
+  EXPECT_EQ(y.find("plastic_c0"), std::string::npos) << y;
+  EXPECT_EQ(resolved_yaml(load_config_text(y, "resolved")), y);
+}
+
+TEST(Config, StoredConfigWithAYieldRadiusKeepsItsDerivedC0ForReadersOnly) {
+  // A run stores the c0 it derived beside the yield radius (for crumple-analyze); read back as
+  // a configuration (to resume), the derived value is dropped, so the two do not contradict.
+  Params p = load_config_text("material: {yield_radius: 0.005}\n", "c.yaml");
+  p.integrator.plastic_c0 = 0.28125;  // exact in binary: printed as written
+  p.c0_from_mesh = true;
+  const std::string stored = resolved_yaml(p);
+  EXPECT_NE(stored.find("plastic_c0: 0.28125"), std::string::npos) << stored;
+  EXPECT_NE(error_of(stored), "");
+  const Params back = load_stored_config(stored, "run.h5:/config");
+  EXPECT_EQ(back.material.yield_radius, 0.005);
+  EXPECT_EQ(back.integrator.plastic_c0, IntegratorSettings{}.plastic_c0);
+  EXPECT_EQ(back.origins.count("integrator.plastic_c0"), 0u);
+}

@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
 # make calibrate's script end to end on tiny sheets: four single-fold runs (two resolutions, two
-# yield curvatures) through crumple-sim, then pipeline/calibration/fold_calibration.py; checks
-# its outputs, that c_f falls with c0, and that bad input exits 2 with a message.
+# yield radii) through crumple-sim, then pipeline/calibration/fold_calibration.py; checks its
+# outputs, that c_f falls with c0 (as the yield radius shrinks), that each run's c0 is the one its
+# mesh derived from the yield radius, and that bad input exits 2 with a message.
 #   test_fold_calibration.sh CRUMPLE_SIM   (run from the repository root)
 set -euo pipefail
 sim="$1"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 for n in 80 160; do
-  for c in 0.05 0.3; do
-    "$sim" protocols/single_fold.yaml -o "$dir/fold_n${n}_c$c.h5" --quiet --threads 1 \
-      --set mesh.nodes=$n --set integrator.plastic_c0=$c
+  for r in 40 10; do
+    "$sim" protocols/single_fold.yaml -o "$dir/fold_n${n}_r${r}mm.h5" --quiet --threads 1 \
+      --set mesh.nodes=$n --set material.yield_radius=${r}e-3
   done
 done
 /usr/bin/python3 pipeline/calibration/fold_calibration.py -o "$dir/out" "$dir"/fold_*.h5
@@ -25,7 +26,11 @@ rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")
 for n in {r["nodes"] for r in rows}:
     rr = sorted((float(r["c0"]), float(r["c_f"])) for r in rows if r["nodes"] == n)
     assert rr[0][1] > rr[1][1] + 0.1, (n, rr)
-print("c_f falls with c0 at both resolutions")
+# c0 ~ w / R_y: a quarter of the radius, about four times the hinge yield on each mesh.
+for n in {r["nodes"] for r in rows}:
+    c0 = {float(r["yield_radius_mm"]): float(r["c0"]) for r in rows if r["nodes"] == n}
+    assert 3.5 < c0[10] / c0[40] < 4.5, (n, c0)
+print("c_f falls with c0 at both resolutions; c0 scales as 1 / R_y")
 PY
 # Bad input: a missing run file exits 2 and names it.
 set +e
