@@ -13,6 +13,8 @@
 #include "analysis/run/analyze_run.hpp"
 #include "analysis/run/write_results.hpp"
 
+#include "crumple/version.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
@@ -174,12 +176,23 @@ int analyze_main(const std::string& run_path, std::string out_dir, const Analyze
 
 int main(int argc, char** argv) {
   AnalyzeOptions opt;
+  opt.program_version = crumple::kVersion;
+  opt.git_revision = crumple::kGitRevision;
   std::string run_path, out_dir;
   CLI::App app{"crumple-analyze: crease length, crease maps, facet segmentation and fits of a "
                "crumple run file (writes stats.json, CSVs and PNGs); `crumple-analyze ensemble "
                "--help` for the statistics over several runs"};
-  app.footer("Exit codes: 0 done; 2 bad input (arguments, run file or output folder: nothing is "
-             "written); 1 any other error (an earlier output folder is left as it was).");
+  app.set_version_flag("--version",
+                       std::string("crumple-analyze ") + crumple::kVersion + " (git " + crumple::kGitRevision + ")");
+  app.footer(
+      "Files written (into RUN.analysis/ or -o DIR; analysis/README.md):\n"
+      "  stats.json          per cycle crease length, P, facets, fits, the threshold and its rule\n"
+      "  cycles.csv          the per-cycle table; stages.csv: crease length at every stage end\n"
+      "  sensitivity.csv     crease length, P and facet count against the crease threshold\n"
+      "  facets.csv, distribution.csv   facet areas and their distribution per cycle\n"
+      "  crease_NNNN.png, facets_NNNN.png   crease map and segmented facets per cycle\n"
+      "Exit codes: 0 done; 2 bad input (arguments, run file or output folder: nothing is\n"
+      "written); 1 any other error (an earlier output folder is left as it was).");
   // Not required by CLI11: the ensemble subcommand has no run file (checked after parsing).
   app.add_option("run", run_path, "run file (RUN.h5) written by crumple-sim");
   std::vector<std::string> ens_inputs;

@@ -34,6 +34,9 @@ struct AnalyzeOptions {
   int crease_px = 1;                              ///< crease line width in pixels
   int bootstrap = 200;                            ///< resamples for the a interval and KS p-value
   std::uint64_t seed = 1;                         ///< seed of the resampling
+  /// The analysing program's version and git revision, written into stats.json beside the
+  /// run's own (the app sets them; the library does not know its build).
+  std::string program_version, git_revision;
 };
 
 struct FacetRecord {

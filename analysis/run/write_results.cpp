@@ -83,6 +83,9 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
                 {"compaction_note",
                  res.compaction_note.empty() ? nlohmann::json() : nlohmann::json(res.compaction_note)},
                 {"n_cycles", run.cycles.size()}};
+  j["analysis"] = {{"program", "crumple-analyze"},
+                   {"program_version", opt.program_version},
+                   {"git_revision", opt.git_revision}};
   j["warnings"] = res.warnings;
   j["parameters"] = {
       {"threshold", res.threshold_rule.threshold},

@@ -218,7 +218,14 @@ int run(const Options& o) {
 int main(int argc, char** argv) {
   Options o;
   CLI::App app{"crumple-sim: simulate a protocol of crumpling stages on an elastoplastic sheet"};
+  app.set_version_flag("--version", std::string("crumple-sim ") + kVersion + " (git " + kGitRevision + ")");
   app.footer(
+      "Files written:\n"
+      "  RUN.h5        the run (docs/FILE_FORMAT.md): mesh, frames, the plastic field at every stage\n"
+      "                end, the compaction per cycle, step log, resolved config, seed, version\n"
+      "  RUN.xdmf      its ParaView description (output.xdmf)\n"
+      "  RUN.h5.tmp    while running: the run so far with a checkpoint (--resume continues it);\n"
+      "                renamed to RUN.h5 when complete\n"
       "Exit codes: 0 done; 2 bad input (nothing written); 3 numerical failure (checkpoint kept in\n"
       "RUN.h5.tmp, continue with --resume); 128+N stopped by signal N (SIGTERM 143, SIGINT 130)\n"
       "after a checkpoint; 1 anything else (e.g. a write failure; the last checkpoint is kept).");

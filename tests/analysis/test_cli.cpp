@@ -2,6 +2,7 @@
 // older file without /stage_ends (works, with a warning), a file with /stage_ends and c0 in its
 // config (per-stage lengths, threshold rule, sensitivity table, increment fits, the new CSVs),
 // and bad input giving exit code 2 with nothing written.
+#include "crumple/version.hpp"
 #include "tests/analysis/synthetic_run.hpp"
 #include "tests/support/scratch.hpp"
 
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sys/wait.h>
@@ -69,6 +71,8 @@ TEST(CrumpleAnalyze, SyntheticRunEndToEnd) {
     EXPECT_TRUE(fs::exists(out / f)) << f;
   std::ifstream in(out / "stats.json");
   const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["analysis"]["program_version"], crumple::kVersion);  // the analyser's provenance
+  EXPECT_EQ(j["analysis"]["git_revision"], crumple::kGitRevision);
   const auto& c = j["cycles"];
   ASSERT_EQ(c.size(), 4u);
   const double length[] = {0.1, 0.2, 0.3, 0.3}, fresh[] = {0.1, 0.1, 0.1, 0.0};
@@ -294,4 +298,27 @@ TEST(CrumpleAnalyze, RerunReplacesTheEarlierFolderWhole) {
   std::sort(names.begin(), names.end());
   EXPECT_EQ(names, (std::vector<std::string>{"good.h5", "out"}));
   fs::remove_all(dir);
+}
+
+TEST(CrumpleAnalyze, VersionAndHelpFollowTheConventions) {
+  const auto out = [](const std::string& args, int& code) {
+    const std::string cmd = std::string(CRUMPLE_ANALYZE_EXE) + " " + args + " 2>/dev/null";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string text;
+    char buf[512];
+    while (p && std::fgets(buf, sizeof buf, p)) text += buf;
+    const int status = p ? pclose(p) : -1;
+    code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return text;
+  };
+  int code = -1;
+  const std::string version = out("--version", code);
+  EXPECT_EQ(code, 0);
+  EXPECT_EQ(version.rfind(std::string("crumple-analyze ") + crumple::kVersion + " (git ", 0), 0u)
+      << version;
+  const std::string help = out("--help", code);
+  EXPECT_EQ(code, 0);
+  for (const char* part : {"--version", "Files written", "stats.json", "crease_NNNN.png",
+                           "Exit codes: 0 done; 2 bad input"})
+    EXPECT_NE(help.find(part), std::string::npos) << part;
 }

@@ -2,6 +2,7 @@
 // with SIGKILL, or stopped by SIGTERM or SIGINT, and resumed gives the uninterrupted result,
 // step log included; no final file exists before the end. (tests/corpus holds the many bad
 // inputs; these are the basic ones.)
+#include "crumple/version.hpp"
 #include "sim/io/run_file.hpp"
 #include "tests/support/scratch.hpp"
 
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <csignal>
 #include <cstring>
 #include <cstdlib>
@@ -219,4 +221,28 @@ TEST(Cli, FailedRunResumesWithCorrectedStepLimits) {
   EXPECT_NE(std::find(c.begin(), c.end(), "integrator.h_min: 0.01 -> 9.9999999999999998e-13"), c.end())
       << (c.empty() ? "" : c[0]);
   EXPECT_EQ(r.resumes[0].t, 0.0);
+}
+
+TEST(Cli, VersionAndHelpFollowTheConventions) {
+  // --version prints the program, its version and git revision on stdout and exits 0; --help
+  // lists the files a run writes and the exit codes.
+  const auto out = [](const std::string& args, int& code) {
+    const std::string cmd = std::string(CRUMPLE_SIM) + " " + args + " 2>/dev/null";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string text;
+    char buf[512];
+    while (p && std::fgets(buf, sizeof buf, p)) text += buf;
+    const int status = p ? pclose(p) : -1;
+    code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return text;
+  };
+  int code = -1;
+  const std::string version = out("--version", code);
+  EXPECT_EQ(code, 0);
+  EXPECT_EQ(version.rfind(std::string("crumple-sim ") + kVersion + " (git ", 0), 0u) << version;
+  const std::string help = out("--help", code);
+  EXPECT_EQ(code, 0);
+  for (const char* part : {"--version", "Files written:", "RUN.h5.tmp", "Exit codes: 0 done; 2 bad input",
+                           "3 numerical failure", "128+N stopped by signal N"})
+    EXPECT_NE(help.find(part), std::string::npos) << part;
 }
