@@ -1,5 +1,8 @@
 # crumple: one entry point for everything. `make reproduce` and `make test` work on a fresh
 # Debian 12 machine: both install what is missing first (`make deps`).
+# Recursive makes (the pipeline's second stage, the sweeps, the calibration) without their
+# entering/leaving-directory lines.
+MAKEFLAGS += --no-print-directory
 BUILD     ?= build
 JOBS      ?= $(shell nproc)
 PRESET    ?= quick

@@ -1,9 +1,11 @@
 // The protocol runner (runner.hpp).
 #include "protocols/runner.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <iomanip>
 #include <sstream>
 
 namespace crumple {
@@ -58,7 +60,33 @@ Checkpoint ProtocolRunner::make_checkpoint(const StageContext& ctx, int cycle, i
   return c;
 }
 
-void ProtocolRunner::progress(const Stage& stage, const StageContext& ctx, int k, bool force) {
+namespace {
+/// "42 s", "7 min", "2.3 h": an ETA a reader takes in at a glance.
+std::string rough_duration(double s) {
+  std::ostringstream os;
+  if (s < 100)
+    os << static_cast<long>(s) << " s";
+  else if (s < 6000)
+    os << static_cast<long>(s / 60 + 0.5) << " min";
+  else
+    os << std::fixed << std::setprecision(1) << s / 3600 << " h";
+  return os.str();
+}
+}  // namespace
+
+double ProtocolRunner::share_done(const Stage& stage, const StageContext& ctx, int k,
+                                  bool ended) const {
+  const double f = ended ? 1.0 : std::clamp(stage.fraction(ctx), 0.0, 1.0);
+  return std::clamp(((ctx.cycle - 1) + (k + f) / num_stages_) / cfg_.cycles, 0.0, 1.0);
+}
+
+void ProtocolRunner::end_progress_line() {
+  if (line_open_) std::fputc('\n', stderr);
+  line_open_ = false;
+}
+
+void ProtocolRunner::progress(const Stage& stage, const StageContext& ctx, int k, bool force,
+                              bool ended) {
   if (cfg_.quiet) return;
   const auto now = std::chrono::steady_clock::now();
   if (!force && std::chrono::duration<double>(now - last_progress_).count() < cfg_.progress_wall_s)
@@ -67,7 +95,14 @@ void ProtocolRunner::progress(const Stage& stage, const StageContext& ctx, int k
   const double wall = std::chrono::duration<double>(now - start_).count();
   const double stage_wall = std::chrono::duration<double>(now - stage_wall_start_).count();
   std::ostringstream os;
-  os << "cycle " << ctx.cycle << "/" << cfg_.cycles << "  stage " << k + 1 << "/" << num_stages_
+  if (!cfg_.label.empty()) os << cfg_.label << ": ";
+  // The whole run: share done (stages counted equal, each by its own fraction where it has
+  // one) and the wall still to go at this process's pace.
+  const double done = share_done(stage, ctx, k, ended);
+  os << static_cast<int>(100 * done) << " %";
+  if (done - done_at_start_ > 0.005 && done < 1)
+    os << " ETA " << rough_duration(wall * (1 - done) / (done - done_at_start_));
+  os << " | cycle " << ctx.cycle << "/" << cfg_.cycles << "  stage " << k + 1 << "/" << num_stages_
      << " " << stage.type() << "  t=" << ctx.state->t << " s";
   const std::string p = stage.progress(ctx);
   if (!p.empty()) os << "  [" << p << "]";
@@ -76,7 +111,14 @@ void ProtocolRunner::progress(const Stage& stage, const StageContext& ctx, int k
   const double f = stage.fraction(ctx);
   if (f > 0.01 && f < 1.0) os << "  stage ETA " << static_cast<long>(stage_wall * (1 - f) / f) << " s";
   os << "  wall " << static_cast<long>(wall) << " s";
-  std::fprintf(stderr, "%s\n", os.str().c_str());
+  if (cfg_.in_place) {
+    // Carriage return and clear to the end of the line: the next line takes this one's place.
+    std::fprintf(stderr, "\r\033[K%s%s", os.str().c_str(), force ? "\n" : "");
+    line_open_ = !force;
+  } else {
+    std::fprintf(stderr, "%s\n", os.str().c_str());
+  }
+  std::fflush(stderr);
 }
 
 namespace {
@@ -153,6 +195,7 @@ bool ProtocolRunner::advance_stage(Stage& stage, StageContext& ctx, State& s, Ru
     bool finished = stage.done(ctx);
     progress(stage, ctx, k, false);
     if (!finished && s.t >= ctx.t_begin + stage.max_duration - kEps) {
+      end_progress_line();
       if (!cfg_.quiet)
         std::fprintf(stderr, "warning: stage %s (cycle %d) reached max_duration %g s before "
                              "its target [%s]\n",
@@ -174,7 +217,7 @@ bool ProtocolRunner::advance_stage(Stage& stage, StageContext& ctx, State& s, Ru
 void ProtocolRunner::finish_stage(Stage& stage, StageContext& ctx, State& s, RunSink& sink,
                                   int c, int k, const StageStart& start) {
   stage.end(ctx);
-  progress(stage, ctx, k, true);
+  progress(stage, ctx, k, true, true);
   stage_wall_[stage.type()] +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - stage_wall_start_).count();
   stepper_.restart();
@@ -211,6 +254,18 @@ bool ProtocolRunner::run(State& s, RunSink& sink, const Checkpoint* resume) {
       next_frame_ += cfg_.frame_dt;
     }
   }
+  try {
+    const bool complete = run_cycles(s, sink, resume, ctx, c0, k0);
+    end_progress_line();
+    return complete;
+  } catch (...) {
+    end_progress_line();  // the failure's message starts on a line of its own
+    throw;
+  }
+}
+
+bool ProtocolRunner::run_cycles(State& s, RunSink& sink, const Checkpoint* resume,
+                                StageContext& ctx, int c0, int k0) {
   for (int c = c0; c <= cfg_.cycles; ++c) {
     ctx.cycle = c;
     if (!(resume && c == c0)) ctx.apparatus = Apparatus{};
@@ -218,6 +273,7 @@ bool ProtocolRunner::run(State& s, RunSink& sink, const Checkpoint* resume) {
       std::unique_ptr<Stage> stage = make_(k);
       const bool resumed_here = resume && c == c0 && k == k0;
       const StageStart start = begin_stage(*stage, ctx, s, resumed_here ? resume : nullptr);
+      if (c == c0 && k == k0) done_at_start_ = share_done(*stage, ctx, k);
       progress(*stage, ctx, k, true);
       if (!advance_stage(*stage, ctx, s, sink, c, k, start)) return false;
       finish_stage(*stage, ctx, s, sink, c, k, start);

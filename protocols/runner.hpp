@@ -54,6 +54,12 @@ struct RunnerSettings {
   double checkpoint_wall_s = 300; ///< wall seconds between checkpoints inside a stage
   double progress_wall_s = 2;     ///< wall seconds between progress lines
   bool quiet = false;
+  /// Names the run on its progress lines (crumple-sim: the run file's folder and stem), so that
+  /// runs side by side on one console can be told apart; empty: no name.
+  std::string label;
+  /// Progress lines overwrite each other in place (a terminal); stage ends stay. Otherwise
+  /// every line is its own, every progress_wall_s.
+  bool in_place = false;
   std::uint64_t seed = 1;
   /// Polled after every chunk of steps: a signal number asks the runner to write a checkpoint
   /// and throw Interrupted (sim/core/stop_signal.hpp); 0 goes on.
@@ -95,7 +101,13 @@ class ProtocolRunner {
                      const StageStart& start);
   void finish_stage(Stage& stage, StageContext& ctx, State& s, RunSink& sink, int c, int k,
                     const StageStart& start);
-  void progress(const Stage& stage, const StageContext& ctx, int k, bool force);
+  /// `ended`: the stage is over (whatever its own fraction says).
+  void progress(const Stage& stage, const StageContext& ctx, int k, bool force, bool ended = false);
+  /// Share of the whole run done: cycles and stages counted equal, a stage by its fraction.
+  double share_done(const Stage& stage, const StageContext& ctx, int k, bool ended = false) const;
+  /// Ends an in-place progress line before anything else is printed.
+  void end_progress_line();
+  bool run_cycles(State& s, RunSink& sink, const Checkpoint* resume, StageContext& ctx, int c0, int k0);
   Checkpoint make_checkpoint(const StageContext& ctx, int cycle, int stage, bool in_stage,
                              const State& stage_begin, const std::string& rng_begin,
                              bool contact_begin) const;
@@ -112,6 +124,8 @@ class ProtocolRunner {
   std::map<std::string, double> stage_wall_;
   std::chrono::steady_clock::time_point start_, last_progress_, stage_wall_start_,
       last_checkpoint_;
+  double done_at_start_ = 0;  ///< share of the run done when this process started (a resume)
+  bool line_open_ = false;    ///< an in-place progress line waits for its newline
 };
 
 /// mt19937_64 state as text and back (checkpoints).

@@ -25,6 +25,7 @@
 #include <ctime>
 #include <filesystem>
 #include <sstream>
+#include <unistd.h>
 
 using namespace crumple;
 
@@ -183,7 +184,11 @@ int run(const Options& o) {
   // What depends on the mesh (the yield curvature of a yield radius) resolved, as stored.
   const Params p = resolved_for_mesh(given, mesh);
   if (!resume_from) rec.config = resolved_yaml(p);
-  Simulation run(p, mesh, registry, o.quiet, stop_requested);
+  // Progress lines carry the run's name (its folder and file stem: runs side by side on one
+  // console), and overwrite each other on a terminal.
+  const std::filesystem::path out(o.output);
+  const std::string label = (out.parent_path().filename() / out.stem()).string();
+  Simulation run(p, mesh, registry, {o.quiet, label, isatty(fileno(stderr)) == 1}, stop_requested);
   const ResolvedMaterial& mat = run.material();
   rec.meta.program_version = kVersion;
   rec.meta.git_revision = kGitRevision;

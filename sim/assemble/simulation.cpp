@@ -16,8 +16,8 @@ std::unique_ptr<SelfContact> make_contact(const Params& p, const Mesh& mesh, She
 
 }  // namespace
 
-Simulation::Simulation(const Params& p, const Mesh& mesh, const StageRegistry& registry, bool quiet,
-         std::function<int()> stop_requested)
+Simulation::Simulation(const Params& p, const Mesh& mesh, const StageRegistry& registry,
+         ProgressDisplay display, std::function<int()> stop_requested)
     : p_(p),
       material_(resolve_material(p.material, mesh.total_area(), mesh.num_nodes())),
       info_(sheet_info(mesh, material_, p.mesh.size)),
@@ -32,7 +32,9 @@ Simulation::Simulation(const Params& p, const Mesh& mesh, const StageRegistry& r
     // step's reused last stage (FSAL) was evaluated without it.
     integ_.before_step = [this](const State& st) { return contact_on_ && contact_->update(st.x); };
   RunnerSettings rs = runner_settings(p);
-  rs.quiet = quiet;
+  rs.quiet = display.quiet;
+  rs.label = std::move(display.label);
+  rs.in_place = display.in_place;
   rs.stop_requested = std::move(stop_requested);
   const YAML::Node& stages = p.protocol.stages;
   runner_ = std::make_unique<ProtocolRunner>(

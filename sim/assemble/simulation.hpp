@@ -16,13 +16,20 @@
 
 namespace crumple {
 
+/// How a run shows its progress (RunnerSettings): silent, or lines named `label`, overwritten in
+/// place on a terminal.
+struct ProgressDisplay {
+  bool quiet = true;
+  std::string label;
+  bool in_place = false;
+};
+
 class Simulation {
  public:
   /// `p` and `mesh` must outlive the run (the stages read p's stage list, the terms the mesh).
-  /// `quiet` silences the runner's progress lines; `stop_requested` is polled after every
-  /// chunk of steps (RunnerSettings).
-  Simulation(const Params& p, const Mesh& mesh, const StageRegistry& registry, bool quiet = true,
-      std::function<int()> stop_requested = [] { return 0; });
+  /// `stop_requested` is polled after every chunk of steps (RunnerSettings).
+  Simulation(const Params& p, const Mesh& mesh, const StageRegistry& registry,
+      ProgressDisplay display = {}, std::function<int()> stop_requested = [] { return 0; });
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 

@@ -246,3 +246,20 @@ TEST(Cli, VersionAndHelpFollowTheConventions) {
                            "3 numerical failure", "128+N stopped by signal N"})
     EXPECT_NE(help.find(part), std::string::npos) << part;
 }
+
+TEST(Cli, ProgressLinesNameTheRunAndTheShareDone) {
+  // Runs side by side on one console: every progress line starts with the run's folder and
+  // stem, then the share of the whole run done (stage ends reach 100 % at the last one).
+  const fs::path cfg = write("tiny.yaml", kTiny);
+  fs::create_directories(kDir / "seedling");
+  const fs::path out = kDir / "seedling" / "run7.h5";
+  const Result r = sim(cfg.string() + " -o " + out.string() + " --force --threads 1");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("\nseedling/run7: 0 % | cycle 1/2  stage 1/2 roll"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\nseedling/run7: 50 % ETA "), std::string::npos) << r.err;  // cycle 1 done
+  EXPECT_NE(r.err.find("\nseedling/run7: 100 % | cycle 2/2  stage 2/2 compress"), std::string::npos)
+      << r.err;
+  // Not a terminal: no carriage returns or escape sequences in a log.
+  EXPECT_EQ(r.err.find('\r'), std::string::npos);
+  EXPECT_EQ(r.err.find('\033'), std::string::npos);
+}
