@@ -13,7 +13,8 @@ SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 DEB_PACKAGES := build-essential cmake git pkg-config libeigen3-dev libhdf5-dev hdf5-tools \
   libyaml-cpp-dev libopencv-dev libcgal-dev libcli11-dev libspdlog-dev libfmt-dev \
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
-  python3-matplotlib python3-numpy python3-h5py python3-scipy python3-yaml
+  python3-matplotlib python3-numpy python3-h5py python3-scipy python3-yaml \
+  python3-pandas
 
 .PHONY: all deps build test test-all test-sanitize test-slurm bench bench-axial physics-check reproduce calibrate docs clean
 
