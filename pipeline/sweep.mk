@@ -21,7 +21,7 @@ SWEEP_GROUPS ?=
 # on the command line to keep a sweep elsewhere (the Slurm test does).
 SWEEP_VARS    = SWEEP=$(SWEEP) BUILD=$(BUILD) SWEEP_DIR=$(SWEEP_DIR) SWEEP_RESULTS=$(SWEEP_RESULTS)
 
-.PHONY: sweep sweep-runs sweep-report keep-study
+.PHONY: sweep sweep-runs sweep-report keep-study study-figures
 
 ifneq ($(SWEEP),)
 -include $(SWEEP_DIR)/points.mk
@@ -63,3 +63,9 @@ $(SWEEP_RESULTS)/REPORT.md: $(SWEEP_ENSEMBLES) $(SWEEP_DIR)/points.json $(ANALYZ
 keep-study:
 	$(PYTHON) pipeline/sweeps/keep_study.py --points $(SWEEP_DIR)/points.json \
 	  --results $(SWEEP_RESULTS) --out docs/studies/$(SWEEP)
+
+# make study-figures: the collapse figure of every kept study, from its collapse.json (the
+# per-group figure, crease_length.png, comes with make sweep, which has the ensembles).
+study-figures:
+	@for d in docs/studies/*/; do [ -f $$d/collapse.json ] || continue; \
+	  $(PYTHON) pipeline/plots/plot_sweep.py --results $$d --collapse-only && echo "$$d"collapse.png; done

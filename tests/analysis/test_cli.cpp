@@ -4,6 +4,7 @@
 // and bad input giving exit code 2 with nothing written.
 #include "crumple/version.hpp"
 #include "tests/analysis/synthetic_run.hpp"
+#include "tests/support/command_output.hpp"
 #include "tests/support/scratch.hpp"
 
 #include <gtest/gtest.h>
@@ -302,14 +303,7 @@ TEST(CrumpleAnalyze, RerunReplacesTheEarlierFolderWhole) {
 
 TEST(CrumpleAnalyze, VersionAndHelpFollowTheConventions) {
   const auto out = [](const std::string& args, int& code) {
-    const std::string cmd = std::string(CRUMPLE_ANALYZE_EXE) + " " + args + " 2>/dev/null";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string text;
-    char buf[512];
-    while (p && std::fgets(buf, sizeof buf, p)) text += buf;
-    const int status = p ? pclose(p) : -1;
-    code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return text;
+    return crumple::testing::command_output(std::string(CRUMPLE_ANALYZE_EXE) + " " + args, code);
   };
   int code = -1;
   const std::string version = out("--version", code);

@@ -4,6 +4,7 @@
 // inputs; these are the basic ones.)
 #include "crumple/version.hpp"
 #include "sim/io/run_file.hpp"
+#include "tests/support/command_output.hpp"
 #include "tests/support/scratch.hpp"
 
 #include <gtest/gtest.h>
@@ -227,14 +228,7 @@ TEST(Cli, VersionAndHelpFollowTheConventions) {
   // --version prints the program, its version and git revision on stdout and exits 0; --help
   // lists the files a run writes and the exit codes.
   const auto out = [](const std::string& args, int& code) {
-    const std::string cmd = std::string(CRUMPLE_SIM) + " " + args + " 2>/dev/null";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string text;
-    char buf[512];
-    while (p && std::fgets(buf, sizeof buf, p)) text += buf;
-    const int status = p ? pclose(p) : -1;
-    code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return text;
+    return crumple::testing::command_output(std::string(CRUMPLE_SIM) + " " + args, code);
   };
   int code = -1;
   const std::string version = out("--version", code);
