@@ -21,7 +21,7 @@ SWEEP_GROUPS ?=
 # on the command line to keep a sweep elsewhere (the Slurm test does).
 SWEEP_VARS    = SWEEP=$(SWEEP) BUILD=$(BUILD) SWEEP_DIR=$(SWEEP_DIR) SWEEP_RESULTS=$(SWEEP_RESULTS)
 
-.PHONY: sweep sweep-runs sweep-report keep-study study-figures
+.PHONY: sweep sweep-runs sweep-report keep-study study-figures convergence
 
 ifneq ($(SWEEP),)
 -include $(SWEEP_DIR)/points.mk
@@ -45,12 +45,15 @@ endif
 sweep-runs: $(SWEEP_RUNS)
 sweep-report: $(SWEEP_RESULTS)/REPORT.md
 
-# The collapse (when the grid varies the compaction), the history test (when the sweep names a
-# test compaction), the figures, then the report.
+# The collapse (when the grid varies the compaction), the convergence table (when it varies the
+# node count alone), the history test (when the sweep names a test compaction), the figures,
+# then the report.
 $(SWEEP_RESULTS)/REPORT.md: $(SWEEP_ENSEMBLES) $(SWEEP_DIR)/points.json $(ANALYZE) \
-    $(wildcard pipeline/plots/*.py pipeline/report/*.py)
+    $(wildcard pipeline/plots/*.py pipeline/report/*.py pipeline/sweeps/*.py)
 	@mkdir -p $(SWEEP_RESULTS)
 	$(if $(SWEEP_COLLAPSE),$(ANALYZE) collapse -o $(SWEEP_RESULTS)/collapse.json $(SWEEP_ENSEMBLES))
+	$(if $(SWEEP_CONVERGENCE),$(PYTHON) pipeline/sweeps/convergence.py --points $(SWEEP_DIR)/points.json \
+	  --results $(SWEEP_RESULTS))
 	$(if $(SWEEP_HISTORY),$(PYTHON) pipeline/sweeps/history_test.py --points $(SWEEP_DIR)/points.json \
 	  --results $(SWEEP_RESULTS) --compaction $(SWEEP_HISTORY))
 	$(PYTHON) pipeline/plots/plot_sweep.py --points $(SWEEP_DIR)/points.json \
@@ -58,14 +61,23 @@ $(SWEEP_RESULTS)/REPORT.md: $(SWEEP_ENSEMBLES) $(SWEEP_DIR)/points.json $(ANALYZ
 	$(PYTHON) pipeline/report/make_sweep_report.py --points $(SWEEP_DIR)/points.json \
 	  --results $(SWEEP_RESULTS) -o $@
 
+# make convergence: the resolution ladder of issue 36 (pipeline/sweeps/convergence.yaml), 1500 to
+# 24000 nodes; SWEEP_GROUPS="nodes-1500 nodes-3000 nodes-6000" runs the rungs a small machine
+# affords first, and the report says which are left.
+convergence:
+	$(MAKE) --no-print-directory sweep SWEEP=convergence
+
 # make keep-study SWEEP=NAME: the sweep's report, figures, fits and per-group tables (no runs)
 # into docs/studies/NAME/, to be committed (pipeline/sweeps/keep_study.py).
 keep-study:
 	$(PYTHON) pipeline/sweeps/keep_study.py --points $(SWEEP_DIR)/points.json \
 	  --results $(SWEEP_RESULTS) --out docs/studies/$(SWEEP)
 
-# make study-figures: the collapse figure of every kept study, from its collapse.json (the
+# make study-figures: the collapse and convergence figures of every kept study, from its JSON (the
 # per-group figure, crease_length.png, comes with make sweep, which has the ensembles).
 study-figures:
-	@for d in docs/studies/*/; do [ -f $$d/collapse.json ] || continue; \
-	  $(PYTHON) pipeline/plots/plot_sweep.py --results $$d --collapse-only && echo "$$d"collapse.png; done
+	@for d in docs/studies/*/; do \
+	  if [ -f $$d/collapse.json ]; then $(PYTHON) pipeline/plots/plot_sweep.py --results $$d \
+	    --collapse-only && echo "$$d"collapse.png || exit 1; fi; \
+	  if [ -f $$d/convergence.json ]; then $(PYTHON) pipeline/plots/plot_sweep.py --results $$d \
+	    --convergence-only && echo "$$d"convergence.png || exit 1; fi; done

@@ -9,6 +9,10 @@ document (RESULTS/collapse.json) of `crumple-analyze collapse`; nothing is fitte
   collapse.png       (collapse only) P/(1 - D) against n/D for every D on one axis, with the
                      experimental law c1 ln(1 + c2 x) and the global fit to the simulation
 
+  convergence.png    (convergence ladder only) P per cycle against the mesh length h with its
+                     Richardson estimate at h = 0, and each rung's relative error against it
+                     with the presets' 15 % and 5 % bands (pipeline/sweeps/convergence.py)
+
 usage: plot_sweep.py --points runs/sweeps/NAME/points.json --results results/NAME
 """
 import argparse
@@ -89,6 +93,49 @@ def collapse(results, out):
     plt.close(fig)
 
 
+def convergence(results, out):
+    doc = load_json(os.path.join(results, "convergence.json"), "convergence document")
+    rows = [r for r in doc.get("rows", []) if r["quantity"] == KEY]
+    if not rows:
+        die(f"{results}/convergence.json has no {KEY} rows (make it with convergence.py)")
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 4.2))
+    for i, r in enumerate(rows):
+        colour = f"C{i % 10}"
+        h = np.array([g["h_m"] * 1e3 for g in r["rungs"]])
+        m = np.array([np.nan if g["mean"] is None else g["mean"] for g in r["rungs"]])
+        s = np.array([g["sem"] or 0 for g in r["rungs"]])
+        ax.errorbar(h, m, yerr=s, fmt="o-", ms=4, capsize=3, color=colour,
+                    label=f"cycle {r['cycle']}")
+        if r.get("estimate") is not None:
+            ax.errorbar([0], [r["estimate"]], yerr=[r["estimate_sem"]], fmt="s", mfc="none",
+                        ms=6, capsize=3, color=colour)
+            ax.plot([0, h[-1]], [r["estimate"], m[-1]], ":", color=colour, lw=1)
+            nodes = [g["nodes"] for g in r["rungs"]]
+            rel = np.array([np.nan if g["rel_error"] is None else 100 * g["rel_error"]
+                            for g in r["rungs"]])
+            rs = np.array([0 if g["rel_error_sem"] is None else 100 * g["rel_error_sem"]
+                           for g in r["rungs"]])
+            bx.errorbar(nodes, rel, yerr=rs, fmt="o-", ms=4, capsize=3, color=colour,
+                        label=f"cycle {r['cycle']}")
+    ax.set_xlim(left=-0.1)
+    ax.set_xlabel("mesh length h = sqrt(area / triangles)  (mm)")
+    ax.set_ylabel("crease length P  (units of L0)")
+    ax.set_title("P per cycle against resolution; squares: Richardson estimate (h = 0)",
+                 fontsize=9)
+    ax.legend(fontsize=7)
+    for tol, style in ((15, "--"), (5, ":")):
+        for sign in (1, -1):
+            bx.axhline(sign * tol, color="0.5", ls=style, lw=1)
+    bx.axhline(0, color="k", lw=0.6)
+    bx.set_xscale("log")
+    bx.set_xlabel("nodes")
+    bx.set_ylabel("(P - estimate) / estimate  (%)")
+    bx.set_title("relative error per rung; bands: 15 % (quick), 5 % (paper)", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+    plt.close(fig)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--points", help="runs/sweeps/NAME/points.json")
@@ -96,9 +143,14 @@ def main():
     ap.add_argument("--collapse-only", action="store_true",
                     help="only collapse.png, from RESULTS/collapse.json alone (a study kept in "
                          "docs/studies/NAME/ without its runs)")
+    ap.add_argument("--convergence-only", action="store_true",
+                    help="only convergence.png, from RESULTS/convergence.json alone")
     a = ap.parse_args()
-    if a.collapse_only:
-        collapse(a.results, os.path.join(a.results, "collapse.png"))
+    if a.collapse_only or a.convergence_only:
+        if a.collapse_only:
+            collapse(a.results, os.path.join(a.results, "collapse.png"))
+        if a.convergence_only:
+            convergence(a.results, os.path.join(a.results, "convergence.png"))
         return
     if not a.points:
         die("give --points (or --collapse-only)")
@@ -106,6 +158,8 @@ def main():
     crease_length(points, a.results, os.path.join(a.results, "crease_length.png"))
     if points.get("collapse"):
         collapse(a.results, os.path.join(a.results, "collapse.png"))
+    if points.get("convergence"):
+        convergence(a.results, os.path.join(a.results, "convergence.png"))
 
 
 if __name__ == "__main__":

@@ -45,6 +45,58 @@ def c2_undetermined(f):
 
 
 
+def pct(v, s=None):
+    if v is None:
+        return "–"
+    return f"{100 * v:+.1f} %" if s is None else f"{100 * v:+.1f} ± {100 * s:.1f} %"
+
+
+def convergence_section(add, doc):
+    """The ladder's table (pipeline/sweeps/convergence.py): per statistic and cycle, each rung's
+    mean ± s.e.m. and relative error against the Richardson estimate."""
+    rungs = doc["rungs"]
+    add("## Convergence in resolution\n")
+    add("Each statistic per cycle at every rung (mean ± s.e.m. over seeds; below it, the relative "
+        "error against the estimate), and the Richardson estimate of its converged value with "
+        "the order used (`pipeline/sweeps/convergence.py`: Q(h) = Q* + C h^p, h = "
+        "sqrt(area / triangles); the order is observed from the finest three rungs when they "
+        "converge monotonically, else assumed 1). A step between the finest two rungs within "
+        "twice their combined s.e.m. is marked *noise*: the seeds do not resolve it.\n")
+    add("| rung | nodes | h (mm) | runs (seeds) |")
+    add("| --- | --- | --- | --- |")
+    for r in rungs:
+        add(f"| {r['group']} | {r['nodes']} | {1e3 * r['h_m']:.3g} | {r['runs']} "
+            f"({', '.join(str(s) for s in r['seeds'])}) |")
+    add("")
+    labels = {}
+    for row in doc["rows"]:
+        labels.setdefault(row["quantity"], (row["label"], row["unit"]))
+    for q, (label, unit) in labels.items():
+        add(f"**{label}** ({unit})\n")
+        add("| cycle | " + " | ".join(f"{r['nodes']}" for r in rungs) + " | estimate | order |")
+        add("| --- | " + " | ".join("---" for _ in rungs) + " | --- | --- |")
+        for row in (x for x in doc["rows"] if x["quantity"] == q):
+            cells = [f"{pm(g['mean'], g['sem'])}<br>{pct(g['rel_error'])}" for g in row["rungs"]]
+            est = (pm(row["estimate"], row["estimate_sem"])
+                   + ("" if row.get("finest_step_resolved", True) else " *noise*")
+                   if row.get("estimate") is not None else "–")
+            order = "–" if row.get("order") is None else (
+                f"{row['order']:.2f}" + (" (assumed)" if "assumed" in row["method"] else ""))
+            add(f"| {row['cycle']} | " + " | ".join(cells) + f" | {est} | {order} |")
+        add("")
+    add("![convergence of P](convergence.png)\n")
+    pre = doc.get("presets", {})
+    lines = []
+    for name, v in pre.items():
+        n = v.get("coarsest_nodes")
+        lines.append(f"`{name}` (P within {100 * v['tolerance']:g} % of the estimate in every "
+                     "cycle): " + (f"{n} nodes" if n else "no rung of this ladder"))
+    if lines:
+        add("**Presets from the ladder.** " + "; ".join(lines) + ". The estimate is only as good "
+            "as the finest rungs: where the order is assumed or the finest step is marked "
+            "*noise*, the rungs' errors are less certain than their quoted s.e.m.\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--points", required=True)
@@ -52,7 +104,8 @@ def main():
     ap.add_argument("-o", "--output", required=True)
     a = ap.parse_args()
     pts = load_json(a.points, "sweep points file")
-    figures = ["crease_length.png"] + (["collapse.png"] if pts.get("collapse") else [])
+    figures = (["crease_length.png"] + (["collapse.png"] if pts.get("collapse") else [])
+               + (["convergence.png"] if pts.get("convergence") else []))
     for f in figures:
         if not os.path.isfile(os.path.join(a.results, f)):
             die(f"missing figure {os.path.join(a.results, f)} (run pipeline/plots/plot_sweep.py "
@@ -166,6 +219,9 @@ def main():
             add(f"| {fmt(g['compaction'])} | {cell(fp, 'c1')} | {cell(fp, 'c2')} | "
                 f"{cell(fl, 'c1')} | {cell(fl, 'c2')} |")
         add("")
+    if pts.get("convergence"):
+        convergence_section(add, load_json(os.path.join(a.results, "convergence.json"),
+                                           "convergence document"))
     if pts.get("history") is not None:
         h = load_json(os.path.join(a.results, "history.json"), "history test")
         add(f"## History independence at D = {h['compaction']:g}\n")
@@ -211,7 +267,9 @@ def main():
     add("## Files\n")
     add("- `groups/GROUP/ensemble.json`: each group's ensemble statistics and fits"
         + ("; `collapse.json`: the global fit and the collapsed points" if pts.get("collapse")
-           else ""))
+           else "")
+        + ("; `convergence.json` and `convergence.csv`: the ladder's table"
+           if pts.get("convergence") else ""))
     add("- the runs and their analyses: `" + os.path.dirname(pts["points"][0]["run"]).rsplit("/", 1)[0]
         + "/GROUP/seedS.h5` and `.analysis/`")
     os.makedirs(os.path.dirname(a.output) or ".", exist_ok=True)

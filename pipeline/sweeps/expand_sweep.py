@@ -30,7 +30,7 @@ import sys
 import yaml
 
 KEYS = {"description", "preset", "protocol", "set", "grid", "seeds", "threads", "collapse",
-        "history"}
+        "convergence", "history"}
 REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
 
@@ -176,6 +176,16 @@ def load(path):
         if c not in ("true", "false"):
             fail(path, cn, "collapse", "expected true or false")
         sweep["collapse"] = c == "true"
+    # A ladder in resolution alone gets the convergence table (convergence.py).
+    sweep["convergence"] = [g["key"] for g in grid] == ["mesh.nodes"]
+    if "convergence" in top:
+        vn = top["convergence"][1]
+        v = scalar_text(path, vn, "convergence")
+        if v not in ("true", "false"):
+            fail(path, vn, "convergence", "expected true or false")
+        if v == "true" and [g["key"] for g in grid] != ["mesh.nodes"]:
+            fail(path, vn, "convergence", "a convergence ladder varies mesh.nodes alone in its grid")
+        sweep["convergence"] = v == "true"
     sweep["history"] = None
     if "history" in top:
         hn = top["history"][1]
@@ -241,6 +251,7 @@ def make_rules(sweep, pts, out_dir, results):
              f"SWEEP_PROTOCOL := {sweep['protocol']}",
              f"SWEEP_COLLAPSE := {'yes' if sweep['collapse'] else ''}",
              f"SWEEP_HISTORY := {sweep['history'] if sweep['history'] is not None else ''}",
+             f"SWEEP_CONVERGENCE := {'yes' if sweep['convergence'] else ''}",
              f"SWEEP_RUNS := {' '.join(p['run'] for p in pts)}",
              f"SWEEP_STATS := {' '.join(p['analysis'] + '/stats.json' for p in pts)}"]
     groups = []
@@ -307,7 +318,8 @@ def main():
         os.makedirs(os.path.dirname(p["run"]), exist_ok=True)
         write_if_changed(p["run"] + ".args", " ".join(shlex.quote(x) for x in p["args"]) + "\n")
     doc = {k: sweep[k] for k in ("name", "file", "description", "preset", "protocol", "seeds",
-                                 "sweep_seeds", "sweep_groups", "threads", "collapse", "history")}
+                                 "sweep_seeds", "sweep_groups", "threads", "collapse", "convergence",
+                                 "history")}
     doc["set"] = [{"key": k, "value": v} for k, v in sweep["set"]]
     doc["grid"] = [{"key": g["key"], "values": g["values"]} for g in sweep["grid"]]
     doc["preset_sets"] = sweep["preset_sets"]

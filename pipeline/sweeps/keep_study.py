@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Keeps a sweep's result in the repository without its runs: from results/NAME (make sweep) to
-docs/studies/NAME/, the report and its figures, the fits (collapse.json, history.json, as the
-sweep made them), and groups.csv, each group's per-cycle ensemble table (mean, s.d. and s.e.m.
+docs/studies/NAME/, the report and its figures, the fits (collapse.json, history.json, convergence.json
+and .csv, as the sweep made them), and groups.csv, each group's per-cycle ensemble table (mean, s.d. and s.e.m.
 over seeds of the crease lengths, P, facet counts, single-triangle fraction and a_fit). The run
 files stay out (they are binary and large); `make sweep SWEEP=NAME` makes them again, and
 `plot_sweep.py --results docs/studies/NAME --collapse-only` redraws the collapse from the JSON.
@@ -32,7 +32,8 @@ def main():
         die(f"{a.results}/REPORT.md: no report (run make sweep SWEEP={pts.get('name', 'NAME')} first)")
     os.makedirs(a.out, exist_ok=True)
     kept = []
-    for f in ("collapse.json", "history.json", "crease_length.png", "collapse.png"):
+    for f in ("collapse.json", "history.json", "convergence.json", "convergence.csv",
+              "crease_length.png", "collapse.png", "convergence.png"):
         if os.path.isfile(os.path.join(a.results, f)):
             shutil.copyfile(os.path.join(a.results, f), os.path.join(a.out, f))
             kept.append(f)

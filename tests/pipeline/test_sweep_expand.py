@@ -58,6 +58,7 @@ class Expand(unittest.TestCase):
             self.assertEqual(len(pts), 8)  # 2 x 2 grid values, 2 seeds
             self.assertEqual(len({p["group"] for p in pts}), 4)
             self.assertTrue(doc["collapse"])  # the grid varies the compaction
+            self.assertFalse(doc["convergence"])  # ... so it is no resolution ladder
             p = pts[0]
             self.assertEqual(p["group"], "compaction-0.5_nodes-200")
             self.assertEqual(p["seed"], 4)
@@ -154,6 +155,25 @@ class Expand(unittest.TestCase):
                     if not l.startswith("#")]
             self.assertEqual(len(rows), 1 + 4 * 3)  # header, 4 groups x 3 cycles
             self.assertIn(",3,2,4 7,30.0,,1.0,", rows[-1])
+
+    def test_a_ladder_in_node_count_gets_the_convergence_table(self):
+        ladder = GOOD.replace("  protocol.stages.compress.compaction: [0.5, 0.27]\n", "")
+        with tempfile.TemporaryDirectory() as tmp:
+            r, _, out = expand(ladder, tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            doc = json.loads(read(os.path.join(out, "points.json")))
+            self.assertTrue(doc["convergence"])
+            self.assertFalse(doc["collapse"])
+            self.assertIn("SWEEP_CONVERGENCE := yes", read(os.path.join(out, "points.mk")))
+        with tempfile.TemporaryDirectory() as tmp:
+            r, _, _ = expand(ladder + "convergence: false\n", tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+        with tempfile.TemporaryDirectory() as tmp:
+            r, _, out = expand(GOOD + "convergence: true\n", tmp)
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("s.yaml:10: convergence: a convergence ladder varies mesh.nodes alone",
+                          r.stderr)
+            self.assertFalse(os.path.exists(out))
 
     def test_bad_sweep_files_name_line_and_key(self):
         cases = [

@@ -1,0 +1,158 @@
+#!/usr/bin/python3
+"""pipeline/sweeps/convergence.py on ladders built here, whose statistics follow Q* + C h^p
+exactly: it recovers the order and the converged value (second and first order, rising and
+falling), falls back to an assumed first order on two rungs or a non-monotone ladder and says
+so, marks a finest step within the seeds' noise, picks the presets' coarsest rungs by their
+tolerance, propagates the s.e.m., and the sweep report and figure read its output.
+
+usage: test_convergence.py   (from the repository root)
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+SCRIPT = os.path.join(REPO, "pipeline", "sweeps", "convergence.py")
+AREA = 0.01  # m^2, the 10 cm sheet
+
+
+def h_of(nodes):
+    return math.sqrt(AREA / (2 * nodes))  # triangles ~ 2 nodes
+
+
+def ladder(tmp, values, sem=0.0, cycles=2):
+    """values: {nodes: [Q for each cycle]} for every statistic alike (P scaled by the cycle)."""
+    pts = {"name": "ladder", "grid": [{"key": "mesh.nodes", "values": [str(n) for n in values]}],
+           "points": []}
+    for nodes, qs in values.items():
+        g = f"nodes-{nodes}"
+        an = os.path.join(tmp, "runs", g, "seed1.analysis")
+        os.makedirs(an)
+        with open(os.path.join(an, "stats.json"), "w") as f:
+            json.dump({"sheet": {"nodes": nodes, "triangles": 2 * nodes, "area_m2": AREA}}, f)
+        pts["points"].append({"group": g, "seed": 1, "analysis": an})
+        rows = []
+        for c in range(cycles):
+            row = {"cycle": c + 1}
+            for key in ("perimeter_P", "crease_length_L0", "n_facets", "single_triangle_fraction",
+                        "a_fit", "dangling_fraction"):
+                row[key + "_mean"] = qs[c]
+                row[key + "_sem"] = sem
+            rows.append(row)
+        os.makedirs(os.path.join(tmp, "groups", g))
+        with open(os.path.join(tmp, "groups", g, "ensemble.json"), "w") as f:
+            json.dump({"cycles": rows, "fits": {}, "stages": {}, "threshold_sensitivity": {},
+                       "runs": [], "n_runs": 3, "seeds": [1, 2, 3]}, f)
+    with open(os.path.join(tmp, "points.json"), "w") as f:
+        json.dump(pts, f)
+
+
+def run(tmp):
+    r = subprocess.run([sys.executable, SCRIPT, "--points", os.path.join(tmp, "points.json"),
+                        "--results", tmp], capture_output=True, text=True)
+    if r.returncode != 0:
+        raise AssertionError(r.stderr)
+    with open(os.path.join(tmp, "convergence.json")) as f:
+        return json.load(f)
+
+
+def exact(nodes, q_star, c, p):
+    return q_star + c * h_of(nodes) ** p
+
+
+class Convergence(unittest.TestCase):
+    def rows(self, doc, key="perimeter_P"):
+        return [r for r in doc["rows"] if r["quantity"] == key]
+
+    def test_recovers_order_and_limit(self):
+        for p, c in ((2.0, 4e4), (1.0, -300.0), (1.5, 5e3)):
+            with self.subTest(p=p, c=c), tempfile.TemporaryDirectory() as tmp:
+                nodes = [1500, 3000, 6000, 12000]
+                ladder(tmp, {n: [exact(n, 50, c, p), exact(n, 80, 2 * c, p)] for n in nodes})
+                doc = run(tmp)
+                self.assertEqual([r["nodes"] for r in doc["rungs"]], nodes)
+                for row, q_star in zip(self.rows(doc), (50, 80)):
+                    self.assertAlmostEqual(row["order"], p, delta=1e-6)
+                    self.assertAlmostEqual(row["estimate"], q_star, delta=1e-6 * q_star)
+                    self.assertIn("observed", row["method"])
+                    for g in row["rungs"]:
+                        self.assertAlmostEqual(g["rel_error"], (g["mean"] - q_star) / q_star,
+                                               delta=1e-9)
+
+    def test_two_rungs_assume_first_order(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            ladder(tmp, {n: [exact(n, 50, -300, 1.0)] * 2 for n in (3000, 6000)})
+            row = self.rows(run(tmp))[0]
+            self.assertIn("assumed", row["method"])
+            self.assertEqual(row["order"], 1.0)
+            self.assertAlmostEqual(row["estimate"], 50, delta=1e-9)  # exact at first order
+
+    def test_non_monotone_is_not_trusted_with_an_observed_order(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            ladder(tmp, {1500: [40, 40], 3000: [48, 48], 6000: [46, 46]})
+            row = self.rows(run(tmp))[0]
+            self.assertIn("assumed", row["method"])
+            self.assertIn("do not converge monotonically", row["method"])
+
+    def test_noise_presets_and_errors(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            # P: 30 % off at 1500, 10 % at 3000, 3 % at 6000, 1 % at 12000 (not exactly a power
+            # law, so the estimate moves a little); s.e.m. 0.5 on 100.
+            ladder(tmp, {1500: [130] * 2, 3000: [110] * 2, 6000: [103] * 2, 12000: [101] * 2},
+                   sem=0.5)
+            doc = run(tmp)
+            row = self.rows(doc)[0]
+            self.assertTrue(row["finest_step_resolved"])  # 2 > 2 * hypot(0.5, 0.5)
+            self.assertGreater(row["estimate_sem"], 0.5)  # the extrapolation amplifies the s.e.m.
+            self.assertAlmostEqual(row["estimate"], 100, delta=1.5)
+            self.assertEqual(doc["presets"]["quick"]["coarsest_nodes"], 3000)
+            self.assertEqual(doc["presets"]["paper"]["coarsest_nodes"], 6000)
+        with tempfile.TemporaryDirectory() as tmp:
+            ladder(tmp, {3000: [100] * 2, 6000: [100.5] * 2}, sem=1.0)
+            self.assertFalse(self.rows(run(tmp))[0]["finest_step_resolved"])
+
+    def test_refuses_a_grid_that_is_not_a_ladder(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            ladder(tmp, {1500: [1, 1], 3000: [2, 2]})
+            with open(os.path.join(tmp, "points.json")) as f:
+                pts = json.load(f)
+            pts["grid"] = [{"key": "protocol.stages.compress.compaction", "values": ["0.27"]}]
+            with open(os.path.join(tmp, "points.json"), "w") as f:
+                json.dump(pts, f)
+            r = subprocess.run([sys.executable, SCRIPT, "--points",
+                                os.path.join(tmp, "points.json"), "--results", tmp],
+                               capture_output=True, text=True)
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("mesh.nodes", r.stderr)
+
+    def test_figure_and_report_section(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            ladder(tmp, {n: [exact(n, 50, 4e4, 2), exact(n, 80, 8e4, 2)]
+                         for n in (1500, 3000, 6000)}, sem=0.3)
+            run(tmp)
+            r = subprocess.run([sys.executable, os.path.join(REPO, "pipeline", "plots",
+                                                             "plot_sweep.py"),
+                                "--results", tmp, "--convergence-only"],
+                               capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertGreater(os.path.getsize(os.path.join(tmp, "convergence.png")), 1000)
+            sys.path.insert(0, os.path.join(REPO, "pipeline", "report"))
+            sys.path.insert(0, os.path.join(REPO, "pipeline", "plots"))
+            from make_sweep_report import convergence_section
+            lines = []
+            with open(os.path.join(tmp, "convergence.json")) as f:
+                convergence_section(lines.append, json.load(f))
+            text = "\n".join(lines)
+            self.assertIn("| 1 | ", text)
+            self.assertIn("estimate", text)
+            self.assertIn("`quick`", text)
+            for q in ("P (facet perimeters)", "facet count", "dangling crease share"):
+                self.assertIn(q, text)
+
+
+if __name__ == "__main__":
+    unittest.main()
