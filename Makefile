@@ -16,21 +16,32 @@ DEB_PACKAGES := build-essential cmake git pkg-config libeigen3-dev libhdf5-dev h
   python3-matplotlib python3-numpy python3-h5py python3-scipy python3-yaml \
   python3-pandas
 
-.PHONY: all deps build test test-all test-sanitize test-slurm bench bench-axial physics-check reproduce calibrate docs clean
+.PHONY: all deps deps-paraview build test test-all test-sanitize test-slurm bench bench-axial physics-check reproduce calibrate docs clean
 
 all: build
 
-# Installs the Debian packages that are missing; a no-op (well under a second) when all are there.
-deps:
-	@missing=$$(dpkg-query -W -f='$${Package} $${Status}\n' $(DEB_PACKAGES) 2>/dev/null \
-	  | awk '$$NF=="installed"{print $$1}' | sort > .deps-present; \
-	  for p in $(DEB_PACKAGES); do grep -qx "$$p" .deps-present || echo $$p; done); \
-	rm -f .deps-present; \
+# Installs the Debian packages of a list that are missing; a no-op (well under a second) when all
+# are there. $(call install_debs,TARGET,PACKAGES)
+define install_debs
+	@missing=$$(dpkg-query -W -f='$${Package} $${Status}\n' $(2) 2>/dev/null \
+	  | awk '$$NF=="installed"{print $$1}' | sort > .deps-present-$(1); \
+	  for p in $(2); do grep -qx "$$p" .deps-present-$(1) || echo $$p; done); \
+	rm -f .deps-present-$(1); \
 	if [ -n "$$missing" ]; then \
-	  echo "make deps: installing$$(echo $$missing | sed 's/^/ /')"; \
+	  echo "make $(1): installing$$(echo $$missing | sed 's/^/ /')"; \
 	  $(SUDO) apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
-	else echo "make deps: all packages present"; fi
+	else echo "make $(1): all packages present"; fi
+endef
+
+deps:
+	$(call install_debs,deps,$(DEB_PACKAGES))
+
+# ParaView (pvpython) and a virtual X server, for the test that opens a run's XDMF files with
+# ParaView's own reader (tests/io/test_paraview.py; skipped with a message without them).
+PARAVIEW_PACKAGES := paraview python3-paraview xvfb xauth
+deps-paraview: deps
+	$(call install_debs,deps-paraview,$(PARAVIEW_PACKAGES))
 
 $(BUILD)/CMakeCache.txt:
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
