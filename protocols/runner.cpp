@@ -256,6 +256,10 @@ bool ProtocolRunner::run(State& s, RunSink& sink, const Checkpoint* resume) {
   }
   try {
     const bool complete = run_cycles(s, sink, resume, ctx, c0, k0);
+    // The run's last state is its last frame (a viewer's last time step is the end of the run),
+    // unless a frame on the frame grid already fell on it.
+    if (!current_stage_.empty() && s.t > next_frame_ - cfg_.frame_dt + kEps)
+      sink.frame(s, current_stage_, current_cycle_);
     end_progress_line();
     return complete;
   } catch (...) {
@@ -274,6 +278,8 @@ bool ProtocolRunner::run_cycles(State& s, RunSink& sink, const Checkpoint* resum
       const bool resumed_here = resume && c == c0 && k == k0;
       const StageStart start = begin_stage(*stage, ctx, s, resumed_here ? resume : nullptr);
       if (c == c0 && k == k0) done_at_start_ = share_done(*stage, ctx, k);
+      current_stage_ = stage->type();
+      current_cycle_ = c;
       progress(*stage, ctx, k, true);
       if (!advance_stage(*stage, ctx, s, sink, c, k, start)) return false;
       finish_stage(*stage, ctx, s, sink, c, k, start);

@@ -121,6 +121,9 @@ class ProtocolRunner {
   std::function<void(bool)> set_contact_ = [](bool) {};
   std::function<bool()> contact_on_ = [] { return false; };
   double next_frame_ = 0;
+  // The stage and cycle running, for the final frame (the run's last state).
+  std::string current_stage_;
+  int current_cycle_ = 0;
   std::map<std::string, double> stage_wall_;
   std::chrono::steady_clock::time_point start_, last_progress_, stage_wall_start_,
       last_checkpoint_;

@@ -16,7 +16,9 @@
 
 namespace crumple::analysis {
 
-/// Default F in threshold = F c0; the one place it is defined (crumple-analyze --threshold-c0).
+/// Default F in threshold = F c0 (crumple-analyze --threshold-c0). The simulator marks crease
+/// masks for viewers with the same F (sim/model/crease_rule.hpp; the two programs share no code,
+/// a test holds them equal).
 inline constexpr double kDefaultThresholdFactor = 0.5;
 
 /// Factors F of the threshold sensitivity table (threshold = F c0).

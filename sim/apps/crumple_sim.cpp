@@ -16,6 +16,7 @@
 #include "sim/io/config_doc.hpp"
 #include "sim/mesh/generate.hpp"
 #include "sim/mesh/quality.hpp"
+#include "sim/model/crease_rule.hpp"
 
 #include <CLI/CLI.hpp>
 #include <omp.h>
@@ -197,6 +198,8 @@ int run(const Options& o) {
   rec.meta.status = "running";
   rec.meta.ks = mat.model.ks, rec.meta.kb = mat.model.kb, rec.meta.mass = mat.model.mass;
   rec.meta.h_eff = mat.h_eff;
+  rec.meta.mass_scale = p.material.mass_scale;
+  rec.meta.crease_threshold = kCreaseThresholdFactor * p.integrator.plastic_c0;
   if (!o.quiet) print_setup(mesh, p, run);
 
   Integrator& integ = run.integrator();
@@ -209,11 +212,17 @@ int run(const Options& o) {
   rec.meta.end_time = utc_now();
   rec.meta.status = complete ? "complete" : "complete: stopped at protocol.t_max";
   sink.write_final();
-  // Both files are complete under temporary names before either takes its final name.
-  if (!paths.xdmf.empty())
-    write_xdmf(paths.xdmf + ".new", std::filesystem::path(paths.run).filename().string(), rec);
+  // All three files are complete under temporary names before any takes its final name.
+  const std::string h5_name = std::filesystem::path(paths.run).filename().string();
+  if (!paths.xdmf.empty()) {
+    write_xdmf(paths.xdmf + ".new", h5_name, rec, XdmfCollection::Frames);
+    write_xdmf(paths.xdmf_cycles + ".new", h5_name, rec, XdmfCollection::Cycles);
+  }
   rename_or_throw(paths.tmp, paths.run);
-  if (!paths.xdmf.empty()) rename_or_throw(paths.xdmf + ".new", paths.xdmf);
+  if (!paths.xdmf.empty()) {
+    rename_or_throw(paths.xdmf + ".new", paths.xdmf);
+    rename_or_throw(paths.xdmf_cycles + ".new", paths.xdmf_cycles);
+  }
   if (!o.quiet) print_summary(o.output, s, rec, run);
   return kExitOk;
 }
@@ -228,7 +237,8 @@ int main(int argc, char** argv) {
       "Files written:\n"
       "  RUN.h5        the run (docs/FILE_FORMAT.md): mesh, frames, the plastic field at every stage\n"
       "                end, the compaction per cycle, step log, resolved config, seed, version\n"
-      "  RUN.xdmf      its ParaView description (output.xdmf)\n"
+      "  RUN.xdmf      its frames for ParaView (output.xdmf)\n"
+      "  RUN.cycles.xdmf  the state at each cycle's end for ParaView (output.xdmf)\n"
       "  RUN.h5.tmp    while running: the run so far with a checkpoint (--resume continues it);\n"
       "                renamed to RUN.h5 when complete\n"
       "Exit codes: 0 done; 2 bad input (nothing written); 3 numerical failure (checkpoint kept in\n"
@@ -245,7 +255,7 @@ int main(int argc, char** argv) {
                "continue a stopped run from RUN.h5.tmp; the configuration must be the run's, "
                "except integrator tolerances, step limits and output intervals");
   app.add_flag("--force", o.force,
-               "replace an existing RUN.h5 (and its .xdmf) and discard a pending RUN.h5.tmp");
+               "replace an existing RUN.h5 (and its .xdmf sidecars) and discard a pending RUN.h5.tmp");
   app.add_flag("--quiet", o.quiet, "no progress output");
   app.add_flag("--list-stages", o.list, "print every stage type with its parameters");
   app.add_flag("--list-keys", o.list_keys,

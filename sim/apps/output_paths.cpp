@@ -53,21 +53,28 @@ OutputPaths check_output_paths(const std::string& run, bool xdmf, bool resume, b
   OutputPaths out;
   out.run = run;
   out.tmp = run + ".tmp";
-  if (xdmf) out.xdmf = fs::path(run).replace_extension(".xdmf").string();
+  if (xdmf) {
+    out.xdmf = fs::path(run).replace_extension(".xdmf").string();
+    out.xdmf_cycles = fs::path(run).replace_extension(".cycles.xdmf").string();
+  }
   if (xdmf && fs::path(out.xdmf).lexically_normal() == fs::path(run).lexically_normal())
     throw InputError("-o " + run +
                      ": the XDMF sidecar would overwrite the run file; name the run file .h5 "
                      "(or set output.xdmf: false)");
   regular_or_absent(run, out.run, "the run file");
   regular_or_absent(run, out.tmp, "the checkpoint " + out.tmp);
-  if (xdmf) regular_or_absent(run, out.xdmf, "the XDMF sidecar " + out.xdmf);
+  if (xdmf) {
+    regular_or_absent(run, out.xdmf, "the XDMF sidecar " + out.xdmf);
+    regular_or_absent(run, out.xdmf_cycles, "the XDMF sidecar " + out.xdmf_cycles);
+  }
   writable_directory(run);
   std::error_code ec;
   if (!force && fs::exists(out.run, ec))
     throw InputError("-o " + run + ": exists; pass --force to replace it");
-  if (!force && xdmf && fs::exists(out.xdmf, ec))
-    throw InputError("-o " + run + ": the XDMF sidecar " + out.xdmf +
-                     " exists; pass --force to replace it");
+  for (const std::string& sidecar : {out.xdmf, out.xdmf_cycles})
+    if (!force && xdmf && fs::exists(sidecar, ec))
+      throw InputError("-o " + run + ": the XDMF sidecar " + sidecar +
+                       " exists; pass --force to replace it");
   if (!force && !resume && fs::exists(out.tmp, ec))
     throw InputError(out.tmp +
                      ": holds the checkpoint of an unfinished run; pass --resume to continue it "

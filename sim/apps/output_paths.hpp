@@ -1,6 +1,6 @@
 // Where crumple-sim writes, checked before anything is computed (README.md, "Running the
 // simulator"): the run file RUN.h5, its checkpoint RUN.h5.tmp (renamed to RUN.h5 at the end)
-// and the XDMF sidecar RUN.xdmf. Each must be a regular file or absent, in a directory that
+// and the XDMF sidecars RUN.xdmf (the frames) and RUN.cycles.xdmf (the cycle ends). Each must be a regular file or absent, in a directory that
 // exists and takes new files; the sidecar must not be the run file; an existing run file or
 // sidecar is replaced only with --force; a pending checkpoint is continued with --resume or
 // discarded with --force, never silently.
@@ -11,7 +11,7 @@
 namespace crumple {
 
 struct OutputPaths {
-  std::string run, tmp, xdmf;  ///< xdmf empty: no sidecar
+  std::string run, tmp, xdmf, xdmf_cycles;  ///< xdmf, xdmf_cycles empty: no sidecars
 };
 
 /// InputError "-o PATH: what is wrong" (exit 2) when the run cannot write where it is asked to.

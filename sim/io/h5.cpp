@@ -36,6 +36,11 @@ H5::Group group(H5::Group& parent, const std::string& name) {
   return exists(parent, name) ? parent.openGroup(name) : parent.createGroup(name);
 }
 
+void units(H5::Group& g, const std::string& name, const std::string& units) {
+  H5::DataSet ds = g.openDataSet(name);
+  attr(ds, "units", units);
+}
+
 bool exists(const H5::Group& g, const std::string& name) {
   return H5Lexists(g.getId(), name.c_str(), H5P_DEFAULT) > 0;
 }

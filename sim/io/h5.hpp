@@ -27,6 +27,10 @@ void attr(H5::H5Object& o, const std::string& name, const std::string& value);
 void attr(H5::H5Object& o, const std::string& name, double value);
 void attr(H5::H5Object& o, const std::string& name, std::int64_t value);
 
+/// The `units` attribute of the dataset `name` of `g` (docs/FILE_FORMAT.md: every dataset has
+/// one; "1" for pure numbers, counts, indices and flags, "none" for text).
+void units(H5::Group& g, const std::string& name, const std::string& units);
+
 bool exists(const H5::Group& g, const std::string& name);
 std::vector<double> read_doubles(const H5::Group& g, const std::string& name,
                                  std::vector<hsize_t>* dims = nullptr);

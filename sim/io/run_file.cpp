@@ -4,6 +4,7 @@
 #include "sim/core/errors.hpp"
 #include "sim/io/h5.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -24,10 +25,37 @@ std::vector<double> to_vec(const VecX& v) { return {v.data(), v.data() + v.size(
 VecX to_eigen(const std::vector<double>& v) { return Eigen::Map<const VecX>(v.data(), v.size()); }
 std::vector<hsize_t> nx3(const VecX& v) { return {static_cast<hsize_t>(v.size() / 3), 3}; }
 
-void write_state(H5::Group& g, const State& s) {
+// The units of the datasets (docs/FILE_FORMAT.md): SI, lengths in the mesh's unit, which is
+// the metre (/meta@length_unit_m = 1); a dimensionless number, count, index or flag is "1".
+struct Units {
+  std::string length, velocity, energy;
+  explicit Units(double length_unit_m) {
+    if (length_unit_m == 1.0) {
+      length = "m", velocity = "m/s", energy = "J";
+    } else {  // never so today; said in full rather than mislabelled
+      std::ostringstream os;
+      os << "(" << std::setprecision(12) << length_unit_m << " m)";
+      length = os.str(), velocity = length + "/s", energy = "kg " + length + "^2/s^2";
+    }
+  }
+};
+constexpr const char* kDimensionless = "1";
+
+// The hinges a viewer sees as creases: |p| > threshold (sim/model/crease_rule.hpp). With no
+// threshold (NaN: a record from before the masks) every hinge is marked 0.
+std::vector<std::uint8_t> crease_mask(const VecX& p, double threshold) {
+  std::vector<std::uint8_t> mask(static_cast<std::size_t>(p.size()), 0);
+  for (Index i = 0; i < p.size(); ++i) mask[static_cast<std::size_t>(i)] = std::abs(p[i]) > threshold;
+  return mask;
+}
+
+void write_state(H5::Group& g, const State& s, const Units& u) {
   h5::write(g, "x", to_vec(s.x), nx3(s.x));
+  h5::units(g, "x", u.length);
   h5::write(g, "v", to_vec(s.v), nx3(s.v));
+  h5::units(g, "v", u.velocity);
   h5::write(g, "p", to_vec(s.p));
+  h5::units(g, "p", kDimensionless);
   h5::attr(g, "t", s.t);
 }
 /// Every shape, index and value read from a file is checked against the mesh before use: a
@@ -70,7 +98,7 @@ std::string numbered(long k, int width) {
   return os.str();
 }
 
-void write_mesh(H5::Group& root, const Mesh& m) {
+void write_mesh(H5::Group& root, const Mesh& m, const Units& u) {
   H5::Group g = h5::group(root, "mesh");
   const Index n = m.num_nodes();
   std::vector<double> ref(3 * n);
@@ -93,6 +121,10 @@ void write_mesh(H5::Group& root, const Mesh& m) {
   h5::write(g, "hinge_edge", hinge_edge);
   h5::write(g, "hinge_factor", factor);
   h5::write(g, "boundary", m.boundary);
+  for (const char* name : {"triangles", "edges", "hinges", "hinge_edge", "hinge_factor", "boundary"})
+    h5::units(g, name, kDimensionless);
+  h5::units(g, "ref_positions", u.length);
+  h5::units(g, "rest_lengths", u.length);
   h5::attr(g, "shape", m.shape);
 }
 
@@ -127,15 +159,21 @@ Mesh read_mesh(const H5::Group& root, const Checker& check) {
 // A restart block (sim/model/restart_data.hpp) as the group `name`: numbers and texts as
 // attributes, arrays as datasets, states as groups. Whose entries they are is not the file's
 // concern; reading takes each attribute by its HDF5 type class.
-void write_restart(H5::Group& root, const std::string& name, const RestartData& d) {
+// Its arrays are the owners' encodings (the integrator's history mixes positions, velocities
+// and step sizes), so their units say so rather than guess.
+void write_restart(H5::Group& root, const std::string& name, const RestartData& d,
+                   const Units& u) {
   H5::Group g = h5::group(root, name);
   for (const auto& [k, v] : d.ints) h5::attr(g, k, v);
   for (const auto& [k, v] : d.reals) h5::attr(g, k, v);
   for (const auto& [k, v] : d.texts) h5::attr(g, k, v);
-  for (const auto& [k, v] : d.arrays) h5::write(g, k, v);
+  for (const auto& [k, v] : d.arrays) {
+    h5::write(g, k, v);
+    h5::units(g, k, "mixed (restart data)");
+  }
   for (const auto& [k, v] : d.states) {
     H5::Group sg = h5::group(g, k);
-    write_state(sg, v);
+    write_state(sg, v, u);
   }
 }
 
@@ -306,6 +344,18 @@ void write_run_file(const std::string& path, const RunRecord& r) {
 }
 
 namespace {
+// What the simulated clock means (every time in the file: /log/t, the frames' and cycles' t).
+std::string time_note(const RunMeta& m) {
+  std::ostringstream os;
+  os << "simulated time in s; the node masses are material.mass_scale = ";
+  if (std::isnan(m.mass_scale)) os << "(not recorded)";
+  else os << std::setprecision(6) << m.mass_scale;
+  os << " times the sheet's, which slows inertial motion by its square root, so elastic waves "
+        "and the explicit steps are that much slower than in the real sheet while the "
+        "quasistatic path is unchanged (docs/MODEL.md, section 8)";
+  return os.str();
+}
+
 void write_all(H5::H5File& file, const RunRecord& r) {
   H5::Group root = file.openGroup("/");
   H5::Group meta = h5::group(root, "meta");
@@ -322,13 +372,20 @@ void write_all(H5::H5File& file, const RunRecord& r) {
   h5::attr(meta, "kb", m.kb);
   h5::attr(meta, "mass", m.mass);
   h5::attr(meta, "h_eff", m.h_eff);
+  h5::attr(meta, "mass_scale", m.mass_scale);
+  h5::attr(meta, "crease_threshold", m.crease_threshold);
+  h5::attr(meta, "time_note", time_note(m));
   h5::write_string(root, "config", r.config);
-  write_mesh(root, r.mesh);
+  h5::units(root, "config", "none");
+  const Units u(m.length_unit_m);
+  write_mesh(root, r.mesh, u);
 
   H5::Group frames = h5::group(root, "frames");
   for (std::size_t k = 0; k < r.frames.size(); ++k) {
     H5::Group g = h5::group(frames, numbered(static_cast<long>(k), 6));
-    write_state(g, r.frames[k].state);
+    write_state(g, r.frames[k].state, u);
+    h5::write(g, "crease", crease_mask(r.frames[k].state.p, m.crease_threshold));
+    h5::units(g, "crease", kDimensionless);
     h5::attr(g, "stage", r.frames[k].stage);
     h5::attr(g, "cycle", std::int64_t{r.frames[k].cycle});
     h5::attr(g, "step", std::int64_t{r.frames[k].step});
@@ -337,7 +394,11 @@ void write_all(H5::H5File& file, const RunRecord& r) {
   for (const auto& c : r.cycles) {
     H5::Group g = h5::group(cycles, numbered(c.cycle, 4));
     h5::write(g, "x", to_vec(c.x), nx3(c.x));
+    h5::units(g, "x", u.length);
     h5::write(g, "p", to_vec(c.p));
+    h5::units(g, "p", kDimensionless);
+    h5::write(g, "crease", crease_mask(c.p, m.crease_threshold));
+    h5::units(g, "crease", kDimensionless);
     h5::attr(g, "t", c.t);
     h5::attr(g, "cycle", std::int64_t{c.cycle});
     h5::attr(g, "compaction", c.compaction);
@@ -347,6 +408,7 @@ void write_all(H5::H5File& file, const RunRecord& r) {
     const StageEndRecord& e = r.stage_ends[k];
     H5::Group g = h5::group(stage_ends, numbered(static_cast<long>(k), 6));
     h5::write(g, "p", to_vec(e.p));
+    h5::units(g, "p", kDimensionless);
     h5::attr(g, "t", e.t);
     h5::attr(g, "cycle", std::int64_t{e.cycle});
     h5::attr(g, "stage", e.stage);
@@ -378,9 +440,17 @@ void write_all(H5::H5File& file, const RunRecord& r) {
   h5::write(log, "e_contact", log_column(r.log, [](const LogRow& x) { return x.e_contact; }));
   h5::write(log, "e_external", log_column(r.log, [](const LogRow& x) { return x.e_external; }));
   h5::write(log, "e_kinetic", log_column(r.log, [](const LogRow& x) { return x.e_kinetic; }));
+  for (const char* name : {"t", "h"}) h5::units(log, name, "s");
+  for (const char* name : {"e_stretch", "e_bend", "e_contact", "e_external", "e_kinetic"})
+    h5::units(log, name, u.energy);
+  for (const char* name : {"a_ratio", "a_ratio_avg", "mode", "order", "newton_iters", "cg_iters",
+                           "rejections"})
+    h5::units(log, name, kDimensionless);
+  H5::DataSet log_t = log.openDataSet("t");
+  h5::attr(log_t, "time_note", time_note(m));
   if (r.summary) write_summary(log, *r.summary);
   if (r.costs) write_costs(log, *r.costs);
-  if (r.checkpoint) write_restart(root, "checkpoint", *r.checkpoint);
+  if (r.checkpoint) write_restart(root, "checkpoint", *r.checkpoint, u);
   H5::Group resumes = h5::group(root, "resumes");
   for (std::size_t k = 0; k < r.resumes.size(); ++k) {
     const ResumeRecord& e = r.resumes[k];
@@ -415,6 +485,9 @@ RunRecord read_run_file(const std::string& path) {
     r.meta.kb = h5::attr_double(meta, "kb");
     r.meta.mass = h5::attr_double(meta, "mass");
     r.meta.h_eff = h5::attr_double(meta, "h_eff");
+    if (meta.attrExists("mass_scale")) r.meta.mass_scale = h5::attr_double(meta, "mass_scale");
+    if (meta.attrExists("crease_threshold"))
+      r.meta.crease_threshold = h5::attr_double(meta, "crease_threshold");
     r.config = h5::read_string(root, "config");
     const Checker check{path};
     r.mesh = read_mesh(root, check);
@@ -530,28 +603,117 @@ void rename_or_throw(const std::string& from, const std::string& to) {
   }
 }
 
-void write_xdmf(const std::string& xdmf_path, const std::string& h5_name, const RunRecord& r) {
-  const Index n = r.mesh.num_nodes();
+namespace {
+// One XDMF time step (docs/FILE_FORMAT.md, "ParaView"): a spatial collection of the surface
+// (triangles, node velocities when stored) and the hinge network (a polyline per hinge edge,
+// its two nodes a hyperslab of /mesh/hinges, carrying p and the crease mask as cell data), with
+// the cycle, the stage's code and the simulated time as field data of both.
+struct XdmfStep {
+  std::string name, group;  // the grid's name, the run file group holding x, p, crease (and v)
+  double time = 0, t = 0;
+  int cycle = 0, stage_code = 0;
+  bool velocity = false;
+};
+
+void xdmf_field(std::ostream& out, const char* name, const std::string& number_type, double v) {
+  out << "     <Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\"Grid\">"
+      << "<DataItem Dimensions=\"1\" NumberType=\"" << number_type
+      << "\" Precision=\"8\" Format=\"XML\">" << std::setprecision(12) << v
+      << "</DataItem></Attribute>\n";
+}
+
+void xdmf_step(std::ostream& out, const std::string& h5, const RunRecord& r, const XdmfStep& s) {
+  const Index n = r.mesh.num_nodes(), tris = r.mesh.num_triangles(), hinges = r.mesh.num_hinges();
+  auto heavy = [&](const std::string& dims, const char* type, int precision,
+                   const std::string& path) {
+    std::ostringstream os;
+    os << "<DataItem Dimensions=\"" << dims << "\" NumberType=\"" << type << "\" Precision=\""
+       << precision << "\" Format=\"HDF\">" << h5 << ":" << path << "</DataItem>";
+    return os.str();
+  };
+  const std::string geometry = "     <Geometry GeometryType=\"XYZ\">" +
+                               heavy(std::to_string(n) + " 3", "Float", 8, s.group + "/x") +
+                               "</Geometry>\n";
+  auto fields = [&] {
+    xdmf_field(out, "cycle", "Int", s.cycle);
+    xdmf_field(out, "stage_code", "Int", s.stage_code);
+    xdmf_field(out, "t", "Float", s.t);
+  };
+  out << "   <Grid Name=\"" << s.name << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
+      << "    <Time Value=\"" << std::setprecision(12) << s.time << "\"/>\n"
+      << "    <Grid Name=\"surface\" GridType=\"Uniform\">\n"
+      << "     <Topology TopologyType=\"Triangle\" NumberOfElements=\"" << tris << "\">"
+      << heavy(std::to_string(tris) + " 3", "Int", 4, "/mesh/triangles") << "</Topology>\n"
+      << geometry;
+  if (s.velocity)
+    out << "     <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">"
+        << heavy(std::to_string(n) + " 3", "Float", 8, s.group + "/v") << "</Attribute>\n";
+  fields();
+  out << "    </Grid>\n"
+      << "    <Grid Name=\"hinges\" GridType=\"Uniform\">\n"
+      << "     <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\""
+      << hinges << "\">\n"
+      << "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << hinges << " 2\" Type=\"HyperSlab\">"
+      << "<DataItem Dimensions=\"3 2\" Format=\"XML\">0 0 1 1 " << hinges << " 2</DataItem>"
+      << heavy(std::to_string(hinges) + " 4", "Int", 4, "/mesh/hinges") << "</DataItem>\n"
+      << "     </Topology>\n"
+      << geometry
+      << "     <Attribute Name=\"p\" AttributeType=\"Scalar\" Center=\"Cell\">"
+      << heavy(std::to_string(hinges), "Float", 8, s.group + "/p") << "</Attribute>\n"
+      << "     <Attribute Name=\"crease\" AttributeType=\"Scalar\" Center=\"Cell\">"
+      << heavy(std::to_string(hinges), "UChar", 1, s.group + "/crease") << "</Attribute>\n";
+  fields();
+  out << "    </Grid>\n   </Grid>\n";
+}
+}  // namespace
+
+void write_xdmf(const std::string& xdmf_path, const std::string& h5_name, const RunRecord& r,
+                XdmfCollection collection) {
+  // Stage codes in order of first appearance among the frames ("initial" first); the names are
+  // in the file's Information element and in each step's name.
+  std::vector<std::string> stages;
+  auto code = [&](const std::string& stage) {
+    const auto it = std::find(stages.begin(), stages.end(), stage);
+    if (it != stages.end()) return static_cast<int>(it - stages.begin());
+    stages.push_back(stage);
+    return static_cast<int>(stages.size()) - 1;
+  };
+  std::vector<XdmfStep> steps;
+  if (collection == XdmfCollection::Frames) {
+    for (std::size_t k = 0; k < r.frames.size(); ++k) {
+      const FrameRecord& f = r.frames[k];
+      std::ostringstream name;
+      name << "t=" << std::setprecision(6) << f.state.t << " s, cycle " << f.cycle << ", "
+           << f.stage;
+      steps.push_back({name.str(), "/frames/" + numbered(static_cast<long>(k), 6), f.state.t,
+                       f.state.t, f.cycle, code(f.stage), true});
+    }
+  } else {
+    for (const CycleRecord& c : r.cycles) {
+      std::ostringstream name;
+      name << "end of cycle " << c.cycle << ", t=" << std::setprecision(6) << c.t << " s";
+      steps.push_back({name.str(), "/cycles/" + numbered(c.cycle, 4), double(c.cycle), c.t,
+                       c.cycle, code("cycle end"), false});
+    }
+  }
   std::ofstream out(xdmf_path);
   if (!out) throw OutputError(xdmf_path + ": cannot create the XDMF file");
-  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
-      << "  <Grid Name=\"sheet\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (std::size_t k = 0; k < r.frames.size(); ++k) {
-    const std::string g = "/frames/" + numbered(static_cast<long>(k), 6);
-    out << "   <Grid Name=\"frame" << k << "\" GridType=\"Uniform\">\n"
-        << "    <Time Value=\"" << std::setprecision(12) << r.frames[k].state.t << "\"/>\n"
-        << "    <Topology TopologyType=\"Triangle\" NumberOfElements=\"" << r.mesh.num_triangles()
-        << "\">\n     <DataItem Dimensions=\"" << r.mesh.num_triangles()
-        << " 3\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5_name
-        << ":/mesh/triangles</DataItem>\n    </Topology>\n"
-        << "    <Geometry GeometryType=\"XYZ\">\n     <DataItem Dimensions=\"" << n
-        << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5_name << ":" << g
-        << "/x</DataItem>\n    </Geometry>\n"
-        << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n"
-        << "     <DataItem Dimensions=\"" << n
-        << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5_name << ":" << g
-        << "/v</DataItem>\n    </Attribute>\n   </Grid>\n";
+  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n";
+  std::string codes;
+  for (std::size_t k = 0; k < stages.size(); ++k) {
+    if (k) codes += ", ";
+    codes += std::to_string(k);
+    codes += " ";
+    codes += stages[k];
   }
+  out << "  <Information Name=\"stage_code\" Value=\"" << codes << "\"/>\n"
+      << "  <Information Name=\"time\" Value=\""
+      << (collection == XdmfCollection::Frames ? "simulated time, s (/meta@time_note)"
+                                               : "cycle number; the field t is the simulated time")
+      << "\"/>\n"
+      << "  <Grid Name=\"" << (collection == XdmfCollection::Frames ? "frames" : "cycles")
+      << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const XdmfStep& s : steps) xdmf_step(out, h5_name, r, s);
   out << "  </Grid>\n </Domain>\n</Xdmf>\n";
   out.close();
   if (!out) {

@@ -18,6 +18,12 @@ struct RunMeta {
   std::uint64_t seed = 0;
   int threads = 1;
   double ks = 0, kb = 0, mass = 0, h_eff = 0, length_unit_m = 1.0;
+  /// material.mass_scale: the node masses' factor, which slows the simulated clock's inertia
+  /// (docs/MODEL.md §8); NaN in files written before it was stored.
+  double mass_scale = std::numeric_limits<double>::quiet_NaN();
+  /// |p| above which the `crease` masks mark a hinge (kCreaseThresholdFactor c0); NaN in files
+  /// written before the masks were stored.
+  double crease_threshold = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct FrameRecord {
@@ -105,9 +111,16 @@ RunRecord read_run_file(const std::string& path);
 void write_run_file_atomic(const std::string& path, const RunRecord& r);
 /// Renames `from` to `to` or throws OutputError (removing `from`).
 void rename_or_throw(const std::string& from, const std::string& to);
-/// The XDMF sidecar for ParaView: a temporal collection of the frames of `h5_name`, written to
-/// `xdmf_path` as it is (the caller writes to a temporary name and renames); OutputError on
-/// failure, with the file removed.
-void write_xdmf(const std::string& xdmf_path, const std::string& h5_name, const RunRecord& r);
+/// Which collection of the run file an XDMF sidecar describes (docs/FILE_FORMAT.md, "ParaView").
+enum class XdmfCollection {
+  Frames,  ///< RUN.xdmf: every stored frame, in simulated time, the final state the last step
+  Cycles,  ///< RUN.cycles.xdmf: the state at the end of each cycle, time = cycle number
+};
+/// An XDMF sidecar for ParaView: a temporal collection over `collection` of `h5_name`, each
+/// step the sheet's surface and its hinge network (the plastic field and the crease mask on the
+/// hinge edges) with cycle, stage and time as field data. Written to `xdmf_path` as it is (the
+/// caller writes to a temporary name and renames); OutputError on failure, the file removed.
+void write_xdmf(const std::string& xdmf_path, const std::string& h5_name, const RunRecord& r,
+                XdmfCollection collection);
 
 }  // namespace crumple

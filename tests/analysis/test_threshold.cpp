@@ -6,6 +6,7 @@
 #include "analysis/io/run_reader.hpp"
 #include "analysis/run/analyze_run.hpp"
 #include "analysis/run/config_params.hpp"
+#include "sim/model/crease_rule.hpp"
 #include "tests/analysis/synthetic_run.hpp"
 
 #include <gtest/gtest.h>
@@ -116,4 +117,10 @@ TEST(ThresholdSensitivity, MonotoneAndConsistentWithTheMainResult) {
     EXPECT_DOUBLE_EQ(row.perimeter_P[default_row], r.cycles[c].perimeter_P);
     EXPECT_EQ(row.n_facets[default_row], static_cast<long>(r.cycles[c].facets.size()));
   }
+}
+
+// The run file's crease masks, which ParaView shows (sim/model/crease_rule.hpp), use the
+// analysis's default threshold: the two programs share no code, so this holds them together.
+TEST(Threshold, RunFileMasksUseTheAnalysisDefault) {
+  EXPECT_EQ(crumple::kCreaseThresholdFactor, crumple::analysis::kDefaultThresholdFactor);
 }

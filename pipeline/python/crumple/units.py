@@ -18,6 +18,7 @@ def run_units(length_unit_m):
     return {
         "ref_positions": L, "rest_lengths": L, "hinge_factor": "1",
         "x": L, "v": f"{L}/s", "p": "1 (c = 2 sin(theta/2))",
+        "crease": "1 (flag: |p| > /meta@crease_threshold)",
         "t": "s (simulated; mass-scaled time when material.mass_scale > 1)",
         "h": "s", "a_ratio": "1", "a_ratio_avg": "1",
         "e_stretch": "J", "e_bend": "J", "e_contact": "J", "e_external": "J", "e_kinetic": "J",
