@@ -1,7 +1,7 @@
 """Helpers shared by the pipeline's plot and report scripts: input checks that fail with a clear
-message, the ensemble file of `crumple-analyze ensemble`, the experimental constants from data/
-and the law they give, and the fragmentation-model density phi(xi; a) of docs/STATISTICS.md
-§3.3."""
+message, the ensemble file of `crumple-analyze ensemble`, the figure output (-o FILE and
+--format png|svg, saved alike by every plot script), the experimental constants from data/ and
+the law they give, and the fragmentation-model density phi(xi; a) of docs/STATISTICS.md §3.3."""
 import csv
 import json
 import math
@@ -37,14 +37,53 @@ def load_ensemble(path):
     return e
 
 
+FIG_FORMATS = ("png", "svg")
+
+
+def add_figure_args(ap):
+    """-o FILE and --format png|svg on a plot script's command line (make reproduce passes
+    --format $(FIG_FORMAT)); figure_output() resolves them."""
+    ap.add_argument("-o", "--output", required=True,
+                    help="figure file (.png or .svg; without an extension, --format's is added)")
+    ap.add_argument("--format", choices=FIG_FORMATS,
+                    help="figure format (default: the output's extension, else png)")
+
+
+def figure_output(args):
+    """The figure's path and format from -o and --format; dies (exit 2) when they disagree or
+    the extension is not a figure format, so a make variable cannot silently pick another."""
+    ext = os.path.splitext(args.output)[1].lower().lstrip(".")
+    if not ext:
+        fmt = args.format or FIG_FORMATS[0]
+        return f"{args.output}.{fmt}", fmt
+    if ext not in FIG_FORMATS:
+        die(f"output {args.output}: a figure is written as {' or '.join(FIG_FORMATS)}, "
+            f"not .{ext}")
+    if args.format and args.format != ext:
+        die(f"--format {args.format} but the output {args.output} ends in .{ext}")
+    return args.output, ext
+
+
+def save_figure(fig, path, fmt, dpi):
+    """Writes the figure; in SVG the text stays text (searchable, editable) and the file carries
+    no date and stable ids, so the same data give the same file."""
+    import matplotlib
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with matplotlib.rc_context({"svg.fonttype": "none", "svg.hashsalt": "crumple"}):
+        fig.savefig(path, format=fmt, dpi=dpi,
+                    metadata={"Date": None} if fmt == "svg" else None)
+
+
 def ensemble_cli(doc):
-    """The plot scripts' command line, ENSEMBLE -o OUTPUT: returns the arguments and the loaded
+    """The plot scripts' command line, ENSEMBLE -o OUTPUT [--format png|svg]: returns the
+    arguments (args.output and args.format resolved by figure_output) and the loaded
     ensemble.json."""
     import argparse
     ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("ensemble", help="ensemble.json from crumple-analyze ensemble")
-    ap.add_argument("-o", "--output", required=True)
+    add_figure_args(ap)
     args = ap.parse_args()
+    args.output, args.format = figure_output(args)
     return args, load_ensemble(args.ensemble)
 
 

@@ -14,13 +14,13 @@
 (d) the dangling fraction 1 - P/(l/L0): the part of the crease length that does not separate
     two facets (crease ends inside a facet).
 
-usage: plot_crease_length.py results/ensemble.json -o results/crease_length.png
+usage: plot_crease_length.py results/ensemble.json -o results/images/crease_length.png [--format png|svg]
 """
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import die, ensemble_cli, law_constants  # noqa: E402
+from common import die, ensemble_cli, law_constants, save_figure  # noqa: E402
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
@@ -139,8 +139,7 @@ def main():
     fig.suptitle(f"Crease length per cycle, {e['n_runs']} run(s); threshold "
                  f"|p| > {e.get('parameters', {}).get('threshold')}", fontsize=11)
     fig.tight_layout()
-    os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
-    fig.savefig(args.output, dpi=110)
+    save_figure(fig, args.output, args.format, dpi=110)
     print(f"plot_crease_length.py: wrote {args.output}")
 
 

@@ -13,13 +13,13 @@ new lengths add up to the cycle's (crumple-analyze, analysis/creases/stage_accou
 Runs without per-stage data (run files without /stage_ends, or an older crumple-analyze) give
 a figure that says so.
 
-usage: plot_stages.py results/ensemble.json -o results/stages.png
+usage: plot_stages.py results/ensemble.json -o results/images/stages.png [--format png|svg]
 """
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import die, ensemble_cli  # noqa: E402
+from common import ensemble_cli, save_figure  # noqa: E402
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
@@ -33,14 +33,13 @@ STAGE_COLOURS = {"roll": "0.6", "compress": "C0", "release": "C1", "unfold": "C3
 def main():
     args, e = ensemble_cli(__doc__)
     st = e["stages"]
-    os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
     fig, (ax, ax2) = plt.subplots(1, 2, figsize=(12, 4.6), gridspec_kw={"width_ratios": [1.4, 1]})
     if not st.get("available"):
         for a in (ax, ax2):
             a.axis("off")
         fig.text(0.5, 0.5, "No per-stage data in these runs:\n" + st.get("note", ""),
                  ha="center", va="center", wrap=True)
-        fig.savefig(args.output, dpi=110)
+        save_figure(fig, args.output, args.format, dpi=110)
         print(f"plot_stages.py: wrote {args.output} (no per-stage data)")
         return
 
@@ -119,7 +118,7 @@ def main():
     ax2.set_title("(b) share made after the last compress stage ended", fontsize=9)
     ax2.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(args.output, dpi=110)
+    save_figure(fig, args.output, args.format, dpi=110)
     print(f"plot_stages.py: wrote {args.output}")
 
 

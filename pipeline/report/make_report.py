@@ -1,30 +1,49 @@
 #!/usr/bin/python3
 """Writes results/REPORT.md from ensemble.json (`crumple-analyze ensemble`) and the figures of
-the plot scripts (crease_length.png, stages.png, facets.png, maps.png, which must be in the
-report's folder): a plain-words verdict on each compared quantity, the crease definition and its
-threshold sensitivity, crease length against the experimental law with the log-law fits, where
-the creases were made (per stage), the facet-area statistics with the KS tests and a resolution
-warning, and the crease maps of one seed. Every comparison is stated as agree or disagree with
-the distance in standard errors of the simulated ensemble mean; references point at
-docs/STATISTICS.md.
+the plot scripts (crease_length, stages, facets and maps, as .png or .svg after --format, which
+must be in images/ beside the report): a plain-words verdict on each compared quantity, the
+crease definition and its threshold sensitivity, crease length against the experimental law with
+the log-law fits, where the creases were made (per stage), the facet-area statistics with the KS
+tests and a resolution warning, the crease maps of one seed, and at the end an index of every
+file in images/ with a line on what it shows. The shown seed's crease and facet images of
+crumple-analyze are copied into images/ too. Every comparison is stated as agree or disagree
+with the distance in standard errors of the simulated ensemble mean; references point at
+docs/STATISTICS.md. Links are relative, so the folder can be copied elsewhere whole.
 
 usage: make_report.py --ensemble results/ensemble.json --runs runs/.../seed1.analysis \
-                      --preset quick --protocol protocols/axial_crumpling.yaml -o results/REPORT.md
+                      --preset quick --protocol protocols/axial_crumpling.yaml [--format svg] \
+                      -o results/REPORT.md
 """
 import argparse
 import glob
 import math
 import os
+import re
 import shutil
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
-from common import die, experiment, load_ensemble, load_json  # noqa: E402
+from common import FIG_FORMATS, die, experiment, load_ensemble, load_json  # noqa: E402
 
 AGREE_SEM = 2.0        # agreement: within this many standard errors
 SINGLE_TRIANGLE_WARN = 0.20
 SHARE_TARGET = 0.15
-FIGURES = ["crease_length.png", "stages.png", "facets.png", "maps.png"]
+IMAGES = "images"      # the figures' folder beside the report; links are relative to the report
+# the plot scripts' figures (file stem: script, caption in the images index)
+FIGURES = {
+    "crease_length": ("plot_crease_length.py",
+                      "P and ℓ/L0 per cycle: each seed, the ensemble mean ± s.e.m., the log-law fits "
+                      "and the experimental law; the per-cycle increments; the dangling fraction"),
+    "stages": ("plot_stages.py",
+               "new crease length made in each stage of each cycle (ensemble mean ± s.e.m.) and the "
+               "share made after compression against the 15 % target"),
+    "facets": ("plot_facets.py",
+               "facet-area distributions per cycle: density of ξ = x/⟨x⟩ against φ(ξ; a_fit) and "
+               "φ(ξ; a_univ), with the one-triangle resolution floor"),
+    "maps": ("plot_maps.py",
+             "crease maps (red and blue: the two fold senses) and facets coloured by area (mm², "
+             "log scale) of the shown seed at the end of each cycle, with scale bars and keys"),
+}
 
 
 def fmt(v, spec=".3g"):
@@ -84,27 +103,78 @@ def rule_text(p):
             "files (older crumple-analyze)")
 
 
+def check_figures(img_dir, fig_format):
+    """{stem: link} of the plot scripts' figures in `fig_format`; dies naming the first one missing
+    (and the format it exists in, if another)."""
+    links = {}
+    for stem, (script, _) in FIGURES.items():
+        path = os.path.join(img_dir, f"{stem}.{fig_format}")
+        if not os.path.isfile(path):
+            other = [f for f in FIG_FORMATS if f != fig_format and
+                     os.path.isfile(os.path.join(img_dir, f"{stem}.{f}"))]
+            hint = f"; there is a {stem}.{other[0]}: give --format {other[0]}?" if other else ""
+            die(f"missing figure {path} (draw it with pipeline/plots/{script} -o {path} "
+                f"--format {fig_format}){hint}")
+        links[stem] = f"{IMAGES}/{stem}.{fig_format}"
+    return links
+
+
+def image_caption(name, shown):
+    """One line on what the image `name` in images/ shows."""
+    stem, ext = os.path.splitext(name)
+    if stem in FIGURES and ext.lstrip(".") in FIG_FORMATS:
+        return FIGURES[stem][1] + "."
+    m = re.match(r"(crease|facets)_(\d+)\.png$", name)
+    if not m:
+        return "not drawn by this report (left in images/ by something else)."
+    seed = shown.get("input", {}).get("meta", {}).get("seed")
+    sheet = shown.get("sheet", {})
+    size = ""
+    if sheet.get("image_width_px") and sheet.get("px_per_m"):
+        size = (f", {sheet['image_width_px']} × {sheet.get('image_height_px', '?')} px at "
+                f"{fmt(sheet['px_per_m'] / 100)} px per cm")
+    if m.group(1) == "crease":
+        what, key = "crease map", ("red p > 0 and blue p < 0 creases, light-grey uncreased sheet, "
+                                   "black outline")
+    else:
+        what, key = "facets", "one arbitrary colour per facet (areas: the maps figure, facets.csv)"
+    return (f"{what} of seed {seed} at the end of cycle {int(m.group(2))} as crumple-analyze "
+            f"draws it (flat reference configuration{size}): {key}.")
+
+
+def images_index(img_dir, shown):
+    """The report's last section: a table of every image file in images/, the plot scripts'
+    figures first, each linked (relative) with a caption."""
+    names = sorted(f for f in os.listdir(img_dir) if f.lower().endswith((".png", ".svg")))
+    order = list(FIGURES)
+    names.sort(key=lambda f: (order.index(os.path.splitext(f)[0])
+                              if os.path.splitext(f)[0] in order else len(order), f))
+    rows = ["## Images\n",
+            f"Every image file in `{IMAGES}/` beside this report (links are relative: copy the "
+            "folder with the report).\n",
+            "| file | what it shows |", "|---|---|"]
+    rows += [f"| [{f}]({IMAGES}/{f}) | {image_caption(f, shown)} |" for f in names]
+    return "\n".join(rows) + "\n"
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--ensemble", required=True)
     ap.add_argument("--runs", required=True, help="analysis folder of the seed whose maps are shown")
     ap.add_argument("--preset", default="?")
     ap.add_argument("--protocol", default="?")
+    ap.add_argument("--format", choices=FIG_FORMATS, default=FIG_FORMATS[0],
+                    help="the figures' format, as given to the plot scripts (default png)")
     ap.add_argument("-o", "--output", required=True)
     args = ap.parse_args()
 
     e = load_ensemble(args.ensemble)
     out_dir = os.path.dirname(os.path.abspath(args.output))
-    for f in FIGURES:
-        if not os.path.isfile(os.path.join(out_dir, f)):
-            die(f"missing figure {os.path.join(out_dir, f)} (run the plot scripts of "
-                "pipeline/plots/ first: plot_crease_length.py, plot_stages.py, plot_facets.py, "
-                "plot_maps.py)")
+    img_dir = os.path.join(out_dir, IMAGES)
+    fig = check_figures(img_dir, args.format)
     shown = load_json(os.path.join(args.runs, "stats.json"), "stats.json of the shown seed")
     images = sorted(glob.glob(os.path.join(args.runs, "crease_*.png")) +
                     glob.glob(os.path.join(args.runs, "facets_*.png")))
-    img_dir = os.path.join(out_dir, "images")
-    os.makedirs(img_dir, exist_ok=True)
     for p in images:
         shutil.copy(p, img_dir)
 
@@ -317,7 +387,7 @@ def main():
 
     # ------------------------------------------------------------------ crease length
     add("## Crease length against the experimental law\n")
-    add("![crease length against cycle number](crease_length.png)\n")
+    add(f"![crease length against cycle number]({fig['crease_length']})\n")
     add("*What is measured and how.* (a) P, the facet-perimeter crease length of the experiments "
         "(Σ facet perimeters − sheet outline)/(2 L0) (docs/STATISTICS.md §2.1), at the end of "
         "each cycle after the sheet is flattened: each seed (grey), the ensemble mean ± s.e.m., "
@@ -389,7 +459,7 @@ def main():
 
     # ------------------------------------------------------------------ stages
     add("## Where the creases were made\n")
-    add("![new crease length by stage](stages.png)\n")
+    add(f"![new crease length by stage]({fig['stages']})\n")
     add("*What is measured and how.* The run file stores the plastic field at the end of every "
         "stage, and the creases (at the threshold above) are found at each stage end. A cycle's new "
         "creases are the hinges creased at its end and not at the previous cycle's end; each is "
@@ -431,7 +501,7 @@ def main():
 
     # ------------------------------------------------------------------ facets
     add("## Facet areas\n")
-    add("![facet-area distributions](facets.png)\n")
+    add(f"![facet-area distributions]({fig['facets']})\n")
     add("*What is measured and how.* The crease map of each cycle is segmented into facets "
         "(connected sheet regions the creases separate, grown over the crease pixels so they tile "
         "the sheet; docs/STATISTICS.md §5); x is a facet's area as a fraction of the sheet in the "
@@ -477,18 +547,17 @@ def main():
 
     # ------------------------------------------------------------------ maps
     add("## Crease maps and facets of one seed\n")
-    add("![crease maps and facets](maps.png)\n")
+    add(f"![crease maps and facets]({fig['maps']})\n")
     add(f"*What is shown.* From `{args.runs}` (seed {shown.get('input', {}).get('meta', {}).get('seed')}), "
-        "at the end of each cycle, in the flat reference configuration, with a scale bar in cm. Top: "
-        "the crease map, creased hinges drawn along their mesh edges, red for p > 0 and blue for "
-        "p < 0 (plastic rest curvature of opposite sense), on the light-grey sheet with its outline "
-        "in black. Bottom: the facets segmented from it, one random colour per facet.\n")
-    if images:
-        links = []
-        for p in images:
-            b = os.path.basename(p)
-            links.append(f"[{b}](images/{b})")
-        add("Full-resolution images: " + ", ".join(links) + ".\n")
+        "at the end of each cycle, in the flat reference configuration, each map with a scale bar "
+        "(the sheet's side is L0 = "
+        f"{fmt(100 * shown.get('sheet', {}).get('L0_m', 0.1))} cm). Top: the crease map, creased "
+        "hinges drawn along their mesh edges, red for p > 0 and blue for p < 0 (plastic rest "
+        "curvature of opposite sense), on the light-grey sheet with its outline in black. Bottom: "
+        "the facets segmented from it, each filled by its area in mm² on a logarithmic colour "
+        "scale (the colour bar; its mark is the mean area of one mesh triangle), with the facet "
+        "boundaries in dark grey. The full-resolution crease and facet images of every cycle are "
+        "listed under Images.\n")
 
     add("## References\n")
     add("- docs/STATISTICS.md §1 (experimental protocol), §2.1–2.4 (crease-length law, P, fitting "
@@ -497,6 +566,8 @@ def main():
         "- O. Gottesman et al., Commun. Phys. 1, 70 (2018) (crease-length law); J. Andrejevic et al., "
         "Nat. Commun. 12, 1470 (2021) (fragmentation model, facet statistics); J. Andrejevic and "
         "C. H. Rycroft, J. Comput. Phys. (2022) (the simulation model, docs/MODEL.md).\n")
+
+    add(images_index(img_dir, shown))
     with open(args.output, "w") as f:
         f.write("\n".join(L))
     print(f"make_report.py: wrote {args.output}")
