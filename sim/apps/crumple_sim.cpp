@@ -22,9 +22,11 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <iomanip>
 #include <sstream>
 #include <unistd.h>
 
@@ -142,6 +144,29 @@ void print_setup(const Mesh& mesh, const Params& p, const Simulation& run) {
                static_cast<int>(run.contact()->pairs->sites().size()));
 }
 
+/// The run in one line, its last on the console (issue 37): its name, cycles, simulated time,
+/// integration wall and steps per mode over the whole run (resumes included), and the crease
+/// length after each cycle in units of the sheet's side L0 (hinges with |p| above the run file's
+/// crease threshold, the analysis's default rule; crumple-analyze gives the full statistics).
+std::string run_line(const std::string& label, const State& s, const RunRecord& rec, double L0) {
+  std::ostringstream os;
+  os << label << ": " << rec.cycles.size() << " cycles to t = " << s.t << " s";
+  if (rec.summary)
+    os << ", integration wall " << std::llround(rec.summary->wall_total) << " s, steps "
+       << rec.summary->steps_implicit << " implicit + " << rec.summary->steps_explicit
+       << " explicit";
+  os << "; crease length l/L0 per cycle (|p| > " << std::setprecision(3)
+     << rec.meta.crease_threshold << "):";
+  for (const CycleRecord& c : rec.cycles) {
+    double length = 0;
+    for (Index h = 0; h < rec.mesh.num_hinges(); ++h)
+      if (std::abs(c.p[h]) > rec.meta.crease_threshold)
+        length += rec.mesh.rest_length[rec.mesh.hinges[static_cast<std::size_t>(h)].edge];
+    os << " " << std::fixed << std::setprecision(1) << length / L0 << std::defaultfloat;
+  }
+  return os.str();
+}
+
 /// What the run did: time, frames, steps per mode, wall per stage, the cost of contact (this
 /// process's share: a resumed run counts from the resume).
 void print_summary(const std::string& output, const State& s, const RunRecord& rec, Simulation& run) {
@@ -223,7 +248,10 @@ int run(const Options& o) {
     rename_or_throw(paths.xdmf + ".new", paths.xdmf);
     rename_or_throw(paths.xdmf_cycles + ".new", paths.xdmf_cycles);
   }
-  if (!o.quiet) print_summary(o.output, s, rec, run);
+  if (!o.quiet) {
+    print_summary(o.output, s, rec, run);
+    std::fprintf(stderr, "%s\n", run_line(label, s, rec, p.mesh.size).c_str());
+  }
   return kExitOk;
 }
 

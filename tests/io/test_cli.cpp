@@ -256,4 +256,24 @@ TEST(Cli, ProgressLinesNameTheRunAndTheShareDone) {
   // Not a terminal: no carriage returns or escape sequences in a log.
   EXPECT_EQ(r.err.find('\r'), std::string::npos);
   EXPECT_EQ(r.err.find('\033'), std::string::npos);
+  // The last line sums the run up: name, cycles, wall, steps per mode, and the crease length
+  // after each cycle, which is the run file's crease mask summed over the hinge edges.
+  std::string last = r.err.substr(0, r.err.size() - 1);
+  last = last.substr(last.rfind('\n') + 1);
+  EXPECT_EQ(last.rfind("seedling/run7: 2 cycles to t = ", 0), 0u) << last;
+  for (const char* part : {"integration wall ", " implicit + ", " explicit; crease length l/L0 per cycle (|p| > "})
+    EXPECT_NE(last.find(part), std::string::npos) << part << " in: " << last;
+  const RunRecord rec = read_run_file(out.string());
+  std::string expected;
+  for (const auto& c : rec.cycles) {
+    double length = 0;
+    for (Index h = 0; h < rec.mesh.num_hinges(); ++h)
+      length += c.p[h] != 0 && std::abs(c.p[h]) > rec.meta.crease_threshold
+                    ? rec.mesh.rest_length[rec.mesh.hinges[static_cast<std::size_t>(h)].edge]
+                    : 0.0;
+    char cell[32];
+    std::snprintf(cell, sizeof cell, " %.1f", length / 0.1);  // kTiny: a 10 cm sheet
+    expected += cell;
+  }
+  EXPECT_EQ(last.substr(last.rfind("):") + 2), expected) << last;
 }
