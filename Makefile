@@ -131,6 +131,7 @@ include pipeline/reproduce.mk
 include pipeline/sweep.mk
 include pipeline/calibration/calibrate.mk
 include pipeline/checks/rate_check.mk
+include pipeline/recipes.mk
 
 # docs/CONFIG.md's key tables from the schema (the test config_doc_current checks them).
 docs: build
