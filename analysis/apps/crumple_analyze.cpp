@@ -89,9 +89,14 @@ void add_run_options(CLI::App& app, AnalyzeOptions& opt, double& absolute) {
                  "2 sin(theta/2)) instead of --threshold-c0")
       ->check(CLI::PositiveNumber)
       ->excludes(by_c0);
-  app.add_option("--px-per-cm", opt.px_per_cm, "raster resolution of the crease map")
+  auto* px_cm = app.add_option("--px-per-cm", opt.px_per_cm, "raster resolution of the crease map")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  app.add_option("--px-per-edge", opt.px_per_edge,
+                 "raster resolution from the mesh instead: the mean mesh edge spans this many "
+                 "pixels (for comparing resolutions; P grows with the raster until about 20)")
+      ->check(CLI::PositiveNumber)
+      ->excludes(px_cm);
   app.add_option("--min-facet-px", opt.segment.min_facet_px,
                  "regions below this many pixels are specks, not facets")
       ->capture_default_str()

@@ -147,7 +147,19 @@ void check_raster_size(const RunData& run, const AnalyzeOptions& opt) {
 
 }  // namespace
 
-RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt) {
+AnalyzeOptions raster_for_mesh(const RunData& run, const AnalyzeOptions& opt) {
+  AnalyzeOptions o = opt;
+  if (opt.px_per_edge > 0) {
+    // The mean edge of an equilateral triangle of the mean area, as the warning below measures.
+    const double edge_m =
+        std::sqrt(4.0 * mean_triangle_area(run.mesh) / std::sqrt(3.0)) * run.length_unit_m;
+    o.px_per_cm = opt.px_per_edge / (100.0 * edge_m);
+  }
+  return o;
+}
+
+RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt_given) {
+  const AnalyzeOptions opt = raster_for_mesh(run, opt_given);
   RunAnalysis out;
   const MeshData& mesh = run.mesh;
   check_raster_size(run, opt);

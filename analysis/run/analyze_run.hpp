@@ -30,6 +30,10 @@ struct AnalyzeOptions {
   std::optional<double> threshold;
   double threshold_c0 = kDefaultThresholdFactor;  ///< F in crease when |p| > F c0
   double px_per_cm = 40.0;                        ///< raster resolution
+  /// When > 0 (--px-per-edge), the raster follows the mesh instead: px_per_cm is set so that
+  /// the mean mesh edge spans this many pixels, so that a ladder in node count measures every
+  /// rung at the same resolution relative to its triangles (docs/studies/convergence/).
+  double px_per_edge = 0.0;
   SegmentParams segment;                          ///< closing size, minimum facet pixels
   int crease_px = 1;                              ///< crease line width in pixels
   int bootstrap = 200;                            ///< resamples for the a interval and KS p-value
@@ -102,6 +106,9 @@ struct RunAnalysis {
 
 /// Throws InputError (io/run_reader.hpp) when no threshold can be derived (c0 = 0 without
 /// --threshold).
+/// `opt` with px_per_cm resolved for this run's mesh when px_per_edge asks for it.
+AnalyzeOptions raster_for_mesh(const RunData& run, const AnalyzeOptions& opt);
+
 RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt);
 
 }  // namespace crumple::analysis

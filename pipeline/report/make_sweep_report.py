@@ -60,7 +60,9 @@ def convergence_section(add, doc):
         "error against the estimate), and the Richardson estimate of its converged value with "
         "the order used (`pipeline/sweeps/convergence.py`: Q(h) = Q* + C h^p, h = "
         "sqrt(area / triangles); the order is observed from the finest three rungs when they "
-        "converge monotonically, else assumed 1). A step between the finest two rungs within "
+        "converge monotonically, else assumed 1; no estimate where the step between the finest "
+        "rungs is no smaller than the one before, or where the extrapolation leaves the "
+        "quantity's range). A step between the finest two rungs within "
         "twice their combined s.e.m. is marked *noise*: the seeds do not resolve it.\n")
     add("| rung | nodes | h (mm) | runs (seeds) |")
     add("| --- | --- | --- | --- |")
@@ -79,7 +81,10 @@ def convergence_section(add, doc):
             cells = [f"{pm(g['mean'], g['sem'])}<br>{pct(g['rel_error'])}" for g in row["rungs"]]
             est = (pm(row["estimate"], row["estimate_sem"])
                    + ("" if row.get("finest_step_resolved", True) else " *noise*")
-                   if row.get("estimate") is not None else "–")
+                   if row.get("estimate") is not None else
+                   "– (extrapolates out of range)" if "leaves the quantity's range" in row["method"]
+                   else "– (no convergence seen)" if row["method"].startswith("no convergence")
+                   else "–")
             order = "–" if row.get("order") is None else (
                 f"{row['order']:.2f}" + (" (assumed)" if "assumed" in row["method"] else ""))
             add(f"| {row['cycle']} | " + " | ".join(cells) + f" | {est} | {order} |")

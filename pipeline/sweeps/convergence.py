@@ -8,9 +8,10 @@ count, from each run's stats.json), so h ∝ N^-1/2. A statistic is modelled as
     Q(h) = Q* + C h^p.
 With three or more rungs the order p is solved from the finest three (any ratios, by bisection);
 it is accepted when the differences keep their sign and 0.5 <= p <= 4, and the estimate is then
-Q* = Q3 + (Q3 - Q2) / ((h2/h3)^p - 1) from the finest two. Otherwise (two rungs, or a
-non-monotone or out-of-range order) p = 1 is assumed and the row says so; with a single rung
-there is no estimate. Q*'s error propagates the finest two s.e.m.; a rung's relative error is
+Q* = Q3 + (Q3 - Q2) / ((h2/h3)^p - 1) from the finest two. When the step between the finest
+rungs is no smaller than the one before (same sign), nothing converges yet and there is no
+estimate. Otherwise (two rungs, or a non-monotone or out-of-range order) p = 1 is assumed and
+the row says so; with a single rung there is no estimate. Q*'s error propagates the finest two s.e.m.; a rung's relative error is
 (Q - Q*) / Q*. Where the change between the finest two rungs is within twice their combined
 s.e.m. the row says the difference is not resolved by the seeds (the extrapolation is then
 mostly noise).
@@ -77,6 +78,14 @@ def extrapolate(rungs):
         p = solve_order(h3, q3)
         if p is not None:
             method = f"Richardson, observed order {p:.2f} (finest three rungs)"
+        else:
+            d12, d23 = q3[0] - q3[1], q3[1] - q3[2]
+            if d12 and d23 and (d12 > 0) == (d23 > 0) and abs(d23) >= abs(d12):
+                # The quantity keeps moving as fast or faster with each refinement: nothing to
+                # extrapolate from, and an assumed order would invent a limit.
+                return {"estimate": None, "method": "no convergence seen: the step between the "
+                        f"finest rungs ({-d23:+.3g}) is not smaller than the one before "
+                        f"({-d12:+.3g})"}
     if p is None:
         p = ASSUMED_ORDER
         method = (f"Richardson, order {ASSUMED_ORDER:g} assumed ("
@@ -91,6 +100,19 @@ def extrapolate(rungs):
     resolved = step > 2 * math.hypot(s2 or 0.0, s3 or 0.0)
     return {"estimate": est, "estimate_sem": est_sem, "order": p, "method": method,
             "finest_step_resolved": resolved}
+
+
+def within_range(est, unit):
+    """A share extrapolated outside [0, 1] (or a count below 0) is no estimate: the rungs are
+    not in the asymptotic range (a jump between rungs, e.g. where a resolution floor of the
+    analysis moves), and the row says so rather than print an impossible value."""
+    e = est.get("estimate")
+    if e is None:
+        return est
+    if (unit == "fraction" and not 0.0 <= e <= 1.0) or (unit in ("1", "L0") and e < 0):
+        return {"estimate": None, "method": f"{est['method']}; no estimate: the extrapolation "
+                f"({e:.3g}) leaves the quantity's range, the rungs are not in the asymptotic range"}
+    return est
 
 
 def rung_of(points, group, results):
@@ -120,6 +142,7 @@ def table(points, results):
                 vals.append((r["h_m"], cyc.get(key + "_mean"), cyc.get(key + "_sem"),
                              r["ensemble"]["n_runs"]))
             est = extrapolate([(h, m, s) for h, m, s, _ in vals])
+            est = within_range(est, unit)
             per_rung = []
             for r, (h, m, s, n) in zip(rungs, vals):
                 e = est.get("estimate")

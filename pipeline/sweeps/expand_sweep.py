@@ -30,7 +30,7 @@ import sys
 import yaml
 
 KEYS = {"description", "preset", "protocol", "set", "grid", "seeds", "threads", "collapse",
-        "convergence", "history"}
+        "convergence", "history", "analyze"}
 REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
 
@@ -196,6 +196,19 @@ def load(path):
             sweep["history"] = None
         if sweep["history"] is None or not 0 < sweep["history"] < 1:
             fail(path, hn, "history", f"{h!r}: the test compaction, a number in (0, 1)")
+    # Extra crumple-analyze arguments for every run (e.g. the ladder's --px-per-edge).
+    sweep["analyze"] = []
+    if "analyze" in top:
+        an = top["analyze"][1]
+        text = scalar_text(path, an, "analyze")
+        try:
+            sweep["analyze"] = shlex.split(text)
+        except ValueError as e:
+            fail(path, an, "analyze", f"{text!r}: not a list of arguments ({e})")
+        if any(a in ("-o", "--output") or not a.startswith("-") and not re.fullmatch(r"[-+.0-9eE]+", a)
+               for a in sweep["analyze"]):
+            fail(path, an, "analyze", f"{text!r}: crumple-analyze options only (no output or "
+                 "input paths)")
     return sweep
 
 
@@ -212,6 +225,7 @@ def points(sweep, out_dir):
             out.append({"name": f"{group}/seed{seed}", "group": group, "seed": int(seed),
                         "values": dict(zip(keys, combo)), "run": run,
                         "analysis": run[:-3] + ".analysis",
+                        "analyze_args": list(sweep["analyze"]),
                         "args": [sweep["protocol"], "--seed", seed, "--threads",
                                  str(sweep["threads"])] + sweep["preset_sets"] + base + own})
     return out
@@ -266,8 +280,9 @@ def make_rules(sweep, pts, out_dir, results):
         lines += [f"{p['run']}: {p['run']}.args {sweep['protocol']} | $(SIM)",
                   f"\t$(SIM) {args} -o $@ $(if $(wildcard $@.tmp),--resume,--force) > $@.log 2>&1 "
                   f"|| {{ echo \"run failed: $@ (see $@.log):\"; tail -n 5 $@.log; exit 1; }}",
-                  f"{p['analysis']}/stats.json: {p['run']} | $(ANALYZE)",
-                  f"\t$(ANALYZE) $< -o {p['analysis']} > {p['analysis']}.log",
+                  f"{p['analysis']}/stats.json: {p['run']} {p['analysis']}.args | $(ANALYZE)",
+                  f"\t$(ANALYZE) $< -o {p['analysis']} "
+                  + "".join(q(x) + " " for x in p["analyze_args"]) + f"> {p['analysis']}.log",
                   ""]
     for g, e in zip(groups, ens):
         members = [p["analysis"] for p in pts if p["group"] == g]
@@ -317,9 +332,12 @@ def main():
     for p in pts:
         os.makedirs(os.path.dirname(p["run"]), exist_ok=True)
         write_if_changed(p["run"] + ".args", " ".join(shlex.quote(x) for x in p["args"]) + "\n")
+        # A changed analysis argument redoes the analysis, not the run.
+        write_if_changed(p["analysis"] + ".args",
+                         " ".join(shlex.quote(x) for x in p["analyze_args"]) + "\n")
     doc = {k: sweep[k] for k in ("name", "file", "description", "preset", "protocol", "seeds",
                                  "sweep_seeds", "sweep_groups", "threads", "collapse", "convergence",
-                                 "history")}
+                                 "history", "analyze")}
     doc["set"] = [{"key": k, "value": v} for k, v in sweep["set"]]
     doc["grid"] = [{"key": g["key"], "values": g["values"]} for g in sweep["grid"]]
     doc["preset_sets"] = sweep["preset_sets"]

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -253,6 +254,27 @@ TEST(CrumpleAnalyze, ThresholdAndThresholdC0TogetherExitTwo) {
   const auto j = nlohmann::json::parse(in);
   EXPECT_EQ(j["parameters"]["threshold_rule"]["kind"], "absolute");
   EXPECT_DOUBLE_EQ(j["parameters"]["threshold"].get<double>(), 0.1);
+  fs::remove_all(dir);
+}
+
+// --px-per-edge sets the raster from the mesh: the mean edge (of an equilateral triangle of the
+// mean triangle area) spans that many pixels, and stats.json records both; with --px-per-cm it
+// is refused.
+TEST(CrumpleAnalyze, RasterFollowsTheMeshWithPxPerEdge) {
+  const fs::path dir = scratch("px_per_edge");
+  const MeshData m = synth::square_grid_mesh(4, 0.1);  // 32 triangles of 0.1^2/32 m^2
+  synth::write_run((dir / "good.h5").string(), m, {std::vector<double>(m.hinges.size(), 0.3)});
+  const fs::path out = dir / "out";
+  const std::string base = (dir / "good.h5").string() + " -o " + out.string();
+  EXPECT_EQ(run_analyze(base + " --px-per-edge 24 --px-per-cm 40"), 2);
+  EXPECT_FALSE(fs::exists(out));
+  ASSERT_EQ(run_analyze(base + " --px-per-edge 24"), 0);
+  std::ifstream in(out / "stats.json");
+  const auto j = nlohmann::json::parse(in);
+  const double edge_m = std::sqrt(4.0 * (0.01 / 32) / std::sqrt(3.0));
+  EXPECT_NEAR(j["parameters"]["px_per_cm"].get<double>(), 24.0 / (100.0 * edge_m), 1e-9);
+  EXPECT_DOUBLE_EQ(j["parameters"]["px_per_edge"].get<double>(), 24.0);
+  EXPECT_NEAR(j["sheet"]["px_per_m"].get<double>(), 24.0 / edge_m, 1e-6);
   fs::remove_all(dir);
 }
 

@@ -115,6 +115,26 @@ class Convergence(unittest.TestCase):
             ladder(tmp, {3000: [100] * 2, 6000: [100.5] * 2}, sem=1.0)
             self.assertFalse(self.rows(run(tmp))[0]["finest_step_resolved"])
 
+    def test_a_share_extrapolated_out_of_range_has_no_estimate(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            # A jump at the finest rung (0.6 -> 0.25) extrapolates a share below 0.
+            ladder(tmp, {1500: [0.6] * 2, 3000: [0.62] * 2, 6000: [0.25] * 2}, sem=0.01)
+            doc = run(tmp)
+            share = self.rows(doc, "single_triangle_fraction")[0]
+            self.assertIsNone(share["estimate"])
+            self.assertIn("leaves the quantity's range", share["method"])
+            self.assertIsNone(share["rungs"][0]["rel_error"])
+
+    def test_no_estimate_where_the_steps_do_not_shrink(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            # +22 then +23 per doubling: growing like ln N, no limit to extrapolate to.
+            ladder(tmp, {1500: [55] * 2, 3000: [77] * 2, 6000: [100] * 2}, sem=1.0)
+            doc = run(tmp)
+            row = self.rows(doc)[0]
+            self.assertIsNone(row["estimate"])
+            self.assertTrue(row["method"].startswith("no convergence seen"))
+            self.assertIsNone(doc["presets"]["quick"]["coarsest_nodes"])
+
     def test_refuses_a_grid_that_is_not_a_ladder(self):
         with tempfile.TemporaryDirectory() as tmp:
             ladder(tmp, {1500: [1, 1], 3000: [2, 2]})

@@ -175,6 +175,23 @@ class Expand(unittest.TestCase):
                           r.stderr)
             self.assertFalse(os.path.exists(out))
 
+    def test_analysis_options_reach_every_analysis(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            r, _, out = expand(GOOD + "analyze: --px-per-edge 24\n", tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            pts = json.loads(read(os.path.join(out, "points.json")))["points"]
+            mk = read(os.path.join(out, "points.mk"))
+            for p in pts:
+                self.assertIn(f"$(ANALYZE) $< -o {p['analysis']} --px-per-edge 24 >", mk)
+                self.assertIn(f"{p['analysis']}/stats.json: {p['run']} {p['analysis']}.args", mk)
+                self.assertEqual(read(p["analysis"] + ".args"), "--px-per-edge 24\n")
+        for bad in ("analyze: -o elsewhere\n", "analyze: runs/x.h5\n"):
+            with self.subTest(bad=bad), tempfile.TemporaryDirectory() as tmp:
+                r, _, out = expand(GOOD + bad, tmp)
+                self.assertEqual(r.returncode, 2)
+                self.assertIn("s.yaml:10: analyze: ", r.stderr)
+                self.assertFalse(os.path.exists(out))
+
     def test_bad_sweep_files_name_line_and_key(self):
         cases = [
             (GOOD.replace("seeds:", "seedz:"), "s.yaml:9: seedz: unknown key"),
