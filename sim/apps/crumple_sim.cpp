@@ -14,6 +14,7 @@
 #include "sim/core/stop_signal.hpp"
 #include "sim/io/config.hpp"
 #include "sim/io/config_doc.hpp"
+#include "sim/io/xdmf.hpp"
 #include "sim/mesh/generate.hpp"
 #include "sim/mesh/quality.hpp"
 #include "sim/model/crease_rule.hpp"

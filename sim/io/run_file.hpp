@@ -111,16 +111,7 @@ RunRecord read_run_file(const std::string& path);
 void write_run_file_atomic(const std::string& path, const RunRecord& r);
 /// Renames `from` to `to` or throws OutputError (removing `from`).
 void rename_or_throw(const std::string& from, const std::string& to);
-/// Which collection of the run file an XDMF sidecar describes (docs/FILE_FORMAT.md, "ParaView").
-enum class XdmfCollection {
-  Frames,  ///< RUN.xdmf: every stored frame, in simulated time, the final state the last step
-  Cycles,  ///< RUN.cycles.xdmf: the state at the end of each cycle, time = cycle number
-};
-/// An XDMF sidecar for ParaView: a temporal collection over `collection` of `h5_name`, each
-/// step the sheet's surface and its hinge network (the plastic field and the crease mask on the
-/// hinge edges) with cycle, stage and time as field data. Written to `xdmf_path` as it is (the
-/// caller writes to a temporary name and renames); OutputError on failure, the file removed.
-void write_xdmf(const std::string& xdmf_path, const std::string& h5_name, const RunRecord& r,
-                XdmfCollection collection);
+/// A group's name in the file: `k` zero-padded to `width` digits (/frames/000012, /cycles/0003).
+std::string numbered(long k, int width);
 
 }  // namespace crumple
