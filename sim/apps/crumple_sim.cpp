@@ -118,9 +118,10 @@ int print_config(const Options& o) {
   std::optional<Checkpoint> resume;
   const Params p = load_run(o, "", rec, resume);
   validate_protocol(p, StageRegistry::builtin());
-  if (p.material.yield_radius > 0)
-    std::printf("# integrator.plastic_c0 below is not used: a run sets it on its mesh from "
-                "material.yield_radius (the run file stores the value)\n");
+  if (p.material.states_yield())
+    std::printf("# integrator.plastic_c0 below is not used: a run sets it from material.%s "
+                "(the run file stores the value)\n",
+                p.material.yield_angle > 0 ? "yield_angle" : "yield_radius");
   std::printf("%s", resolved_yaml(p).c_str());
   return kExitOk;
 }
@@ -135,6 +136,9 @@ void print_setup(const Mesh& mesh, const Params& p, const Simulation& run) {
                kVersion, kGitRevision, mesh.shape.c_str(), mesh.num_nodes(), mesh.num_triangles(),
                q.min_angle_deg, q.edge_cv, mat.model.ks, mat.model.kb, mat.model.mass, mat.h_eff,
                mat.model.b_iso, mat.model.b_int);
+  if (p.material.yield_angle > 0)
+    std::fprintf(stderr, "  yield: c0 %.4g from the yield angle %.4g deg (the same on every mesh)\n",
+                 p.integrator.plastic_c0, p.material.yield_angle);
   if (p.material.yield_radius > 0)
     std::fprintf(stderr, "  yield: c0 %.4g from the yield radius %.4g m over a mean hinge width %.4g m\n",
                  p.integrator.plastic_c0, p.material.yield_radius, mean_hinge_width(mesh));

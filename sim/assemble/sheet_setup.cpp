@@ -35,6 +35,8 @@ ContactSettings contact_settings(const ContactParams& c, const Mesh& mesh,
 }
 
 double plastic_c0(const Params& p, const Mesh& mesh) {
+  if (p.material.yield_angle > 0)
+    return 2.0 * std::sin(p.material.yield_angle * std::numbers::pi / 360.0);
   const double r_y = p.material.yield_radius;
   if (r_y <= 0) return p.integrator.plastic_c0;
   const double w = mean_hinge_width(mesh);
@@ -56,7 +58,7 @@ IntegratorSettings integrator_settings(const Params& p, const Mesh& mesh) {
 }
 
 Params resolved_for_mesh(Params p, const Mesh& mesh) {
-  if (p.material.yield_radius <= 0) return p;
+  if (!p.material.states_yield()) return p;
   p.integrator.plastic_c0 = plastic_c0(p, mesh);
   p.c0_from_mesh = true;
   return p;

@@ -28,7 +28,10 @@ ContactSettings contact_settings(const ContactParams& c, const Mesh& mesh,
 /// the mesh's mean width w (mean_hinge_width) bent about its edge to the radius R_y,
 /// c0 = 2 sin(w / (2 R_y)). A yield radius is a property of the sheet; c0 is per hinge and so
 /// per mesh: R_y = 8.1 mm is c0 = 0.30 on the 10 cm sheet at 1500 nodes and 0.105 at 12000
-/// (docs/MODEL.md §7.5). Throws InputError when R_y is so small that w / R_y >= pi.
+/// (docs/MODEL.md §7.5). When material.yield_angle theta_y is set instead, c0 = 2 sin(theta_y / 2)
+/// on every mesh: the yield of a fold narrower than any hinge, which a mesh whose edges are many
+/// sheet thicknesses long always concentrates on one hinge (§7.6). Throws InputError when R_y is
+/// so small that w / R_y >= pi.
 double plastic_c0(const Params& p, const Mesh& mesh);
 
 /// The integrator's settings of a run on `mesh` (plastic_c0 as above).

@@ -72,7 +72,7 @@ schema::Section make() {
       flag("plasticity", &S::plasticity).means("plastic flow of the hinges on or off"),
       real("plastic_c0", &S::plastic_c0).at_least(0).below(2)
           .means("yield curvature c0, per hinge in units of 2 sin(theta/2) (eq. 19); a mesh "
-                 "property: material.yield_radius gives the sheet's yield instead"),
+                 "property: material.yield_radius or yield_angle states the sheet's yield instead"),
       real("plastic_gamma", &S::plastic_gamma).at_least(0).means("rate constant gamma (eq. 19)"),
       real("plastic_rate", &S::plastic_rate).above(0).units("1/s")
           .means("time scale of the plastic flow (rate-independent at the default)"),

@@ -326,7 +326,7 @@ Params parse(YAML::Node root, Context& ctx) {
   return p;
 }
 
-/// The schema's integrator.plastic_c0, which material.yield_radius sets on each mesh.
+/// The schema's integrator.plastic_c0, which material.yield_radius or yield_angle sets.
 const schema::Key* yield_derived_key() {
   static const schema::Key* key = [] {
     for (const auto& cs : config_schema())
@@ -336,12 +336,20 @@ const schema::Key* yield_derived_key() {
   return key;
 }
 
-/// material.yield_radius sets integrator.plastic_c0 on each mesh; both given is a contradiction.
+/// material.yield_radius and material.yield_angle each set integrator.plastic_c0; two of the
+/// three given is a contradiction, reported at the later key with the place of the first.
 void check_yield_given_once(const Params& p) {
-  if (p.material.yield_radius <= 0 || !p.origins.count("integrator.plastic_c0")) return;
-  throw InputError(p.where("integrator.plastic_c0") + ": given together with material.yield_radius (" +
-                   p.origins.at("material.yield_radius") +
-                   "), which sets it on each mesh; give one of the two");
+  const auto given = [&](const char* key) { return p.origins.count(key) > 0; };
+  const auto refuse = [&](const std::string& key, const std::string& by, const char* how) {
+    throw InputError(p.where(key) + ": given together with " + by + " (" + p.origins.at(by) + ")" +
+                     how + "; give one of the two");
+  };
+  const bool radius = p.material.yield_radius > 0, angle = p.material.yield_angle > 0;
+  if (radius && angle)
+    refuse("material.yield_angle", "material.yield_radius", ": two statements of the sheet's yield");
+  if (!given("integrator.plastic_c0")) return;
+  if (radius) refuse("integrator.plastic_c0", "material.yield_radius", ", which sets it on each mesh");
+  if (angle) refuse("integrator.plastic_c0", "material.yield_angle", ", which sets it on every mesh");
 }
 
 Params load_from(const std::string& text, const std::string& name,
@@ -415,9 +423,10 @@ Params load_stored_config(const std::string& text, const std::string& name) {
       dropped = section.remove(dotted.substr(dot + 1)) || dropped;
   };
   for (const auto& [dotted, why] : retired_keys()) drop(dotted);
-  // A run with a yield radius stores the plastic_c0 it derived on its mesh, for readers; as
-  // input the two contradict each other (check_yield_given_once), so the derived one goes.
-  if (root.IsMap() && root["material"].IsMap() && root["material"]["yield_radius"])
+  // A run with a yield radius or angle stores the plastic_c0 it derived, for readers; as input
+  // the two contradict each other (check_yield_given_once), so the derived one goes.
+  if (root.IsMap() && root["material"].IsMap() &&
+      (root["material"]["yield_radius"] || root["material"]["yield_angle"]))
     drop("integrator.plastic_c0");
   if (!dropped) return load_from(text, name, {});
   YAML::Emitter e;
@@ -441,8 +450,8 @@ std::string resolved_yaml(const Params& p) {
       if (k.zero_is_unset && k.get_number(values) == 0) continue;
       // With a yield radius, plastic_c0 is known only on a mesh: a run stores the value it
       // derived (Params::c0_from_mesh); a configuration not yet on a mesh leaves it out, so that
-      // it reads back as it was given.
-      if (&k == yield_derived_key() && p.material.yield_radius > 0 && !p.c0_from_mesh) continue;
+      // it reads back as it was given (a yield angle is treated alike).
+      if (&k == yield_derived_key() && p.material.states_yield() && !p.c0_from_mesh) continue;
       e << YAML::Key << k.name << YAML::Value;
       switch (k.kind) {
         case schema::Kind::Real: e << k.get_number(values); break;

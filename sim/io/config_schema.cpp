@@ -58,6 +58,11 @@ Section material_section() {
           .unset_when_zero().shown_default("unset: integrator.plastic_c0")
           .means("yield radius of curvature: sets integrator.plastic_c0 on each mesh to "
                  "2 sin(w / (2 R_y)), w the mean hinge width (docs/MODEL.md §7.5)"),
+      real("yield_angle", &S::yield_angle).at_least(0).below(180).units("deg")
+          .unset_when_zero().shown_default("0: unset")
+          .means("yield fold angle: a fold sharper than it yields; sets integrator.plastic_c0 "
+                 "to 2 sin(angle / 2) on every mesh (docs/MODEL.md §7.6); 0 unsets a protocol's "
+                 "angle, so that a yield radius or c0 can be given instead"),
   };
   s.all_or_none = {"ks", "kb", "mass"};
   return s;

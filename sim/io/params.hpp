@@ -31,6 +31,12 @@ struct MaterialParams {
   /// it fixes integrator.plastic_c0 on each mesh (sim/assemble/sheet_setup.hpp); 0: unset, the
   /// yield is integrator.plastic_c0 as given.
   double yield_radius = 0;
+  /// Yield fold angle theta_y (degrees): a fold sharper than theta_y yields, wherever the mesh
+  /// puts it. Set, it fixes integrator.plastic_c0 = 2 sin(theta_y / 2) on every mesh; 0: unset.
+  double yield_angle = 0;
+  /// True when the material states the yield (yield_radius or yield_angle) and so sets
+  /// integrator.plastic_c0.
+  bool states_yield() const { return yield_radius > 0 || yield_angle > 0; }
 };
 
 struct ContactParams {
@@ -66,7 +72,7 @@ struct Params {
   ProtocolParams protocol;
   OutputParams output;
   std::string file;              ///< the config's path (for messages)
-  /// True once integrator.plastic_c0 holds the value material.yield_radius gives on the run's
+  /// True once integrator.plastic_c0 holds the value material.yield_radius or yield_angle gives on the run's
   /// mesh (sim/assemble/sheet_setup.hpp, resolved_for_mesh); resolved_yaml then writes it.
   bool c0_from_mesh = false;
   /// Where each key the input gave was set: dotted key -> "FILE:LINE:COL" or "--set key=value"

@@ -124,6 +124,25 @@ TEST(YieldRadius, BendingTheSheetToItBringsTheHingesAlongTheBendToC0) {
   EXPECT_NEAR(c0s[0] / c0s[1], 2.0, 0.1);
 }
 
+TEST(YieldAngle, GivesTheSameC0OnEveryMeshAndTheFoldAngleThatYields) {
+  // A fold of angle theta on one hinge has c = 2 sin(theta / 2) whatever the hinge's width, so a
+  // yield angle is one c0 on every mesh, and folding a hinge to that angle reaches c0 exactly.
+  Params p;
+  p.material.yield_angle = 17.25;
+  const double expected = 2 * std::sin(17.25 * M_PI / 360);
+  for (int nodes : {400, 1500}) {
+    const Mesh mesh = generate_mesh(MeshSpec{"square", 0.1, nodes, 2});
+    EXPECT_NEAR(plastic_c0(p, mesh), expected, 1e-15) << nodes;
+    const Params r = resolved_for_mesh(p, mesh);
+    EXPECT_TRUE(r.c0_from_mesh);
+    EXPECT_EQ(r.integrator.plastic_c0, plastic_c0(p, mesh));
+  }
+  // One hinge folded to the yield angle: flat pair turned about the shared edge.
+  const double t = 17.25 * M_PI / 180;
+  const Vec3 x0(0, 0, 0), x1(1, 0, 0), x2(0.4, 1, 0), x3(0.6, -std::cos(t), std::sin(t));
+  EXPECT_NEAR(std::abs(hinge_curvature(x0, x1, x2, x3)), expected, 1e-12);
+}
+
 TEST(YieldRadius, UnsetLeavesTheConfiguredC0AndTooSmallIsRefused) {
   const Mesh mesh = generate_mesh(MeshSpec{"square", 0.1, 400, 1});
   Params p;

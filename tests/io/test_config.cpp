@@ -257,6 +257,40 @@ TEST(Config, YieldRadiusAndPlasticC0AreNotBothGiven) {
   EXPECT_EQ(resolved_yaml(load_config_text(y, "resolved")), y);
 }
 
+TEST(Config, YieldAngleIsOneOfTheThreeStatementsOfTheYield) {
+  // The yield angle, the yield radius and c0 each fix the hinge yield: any two are refused at
+  // the later key, naming the place of the other.
+  const std::string with_c0 = error_of("material: {yield_angle: 20}\nintegrator: {plastic_c0: 0.3}\n");
+  EXPECT_TRUE(starts(with_c0, "c.yaml:2:26: integrator.plastic_c0: given together with "
+                              "material.yield_angle (c.yaml:1:25), which sets it on every mesh"))
+      << with_c0;
+  const std::string with_radius = error_of("material: {yield_radius: 0.005, yield_angle: 20}\n");
+  EXPECT_TRUE(starts(with_radius, "c.yaml:1:46: material.yield_angle: given together with "
+                                  "material.yield_radius (c.yaml:1:26): two statements"))
+      << with_radius;
+  EXPECT_NE(error_of("material: {yield_angle: 180}\n").find("material.yield_angle: must be >= 0 and < 180"),
+            std::string::npos);
+  // 0 unsets a file's angle, so a yield radius can replace it (the studies of the yield radius).
+  const Params radius = load_config_text("material: {yield_angle: 37}\n", "c.yaml",
+                                         {"material.yield_angle=0", "material.yield_radius=0.0081"});
+  EXPECT_EQ(radius.material.yield_angle, 0);
+  EXPECT_EQ(radius.material.yield_radius, 0.0081);
+  // Alone it loads, and the configuration before a mesh leaves the derived c0 out.
+  const Params p = load_config_text(
+      "material: {yield_angle: 17.25}\nprotocol:\n  stages:\n    - {type: roll, duration: 0.1}\n",
+      "c.yaml");
+  EXPECT_EQ(p.material.yield_angle, 17.25);
+  const std::string y = resolved_yaml(p);
+  EXPECT_EQ(y.find("plastic_c0"), std::string::npos) << y;
+  EXPECT_EQ(resolved_yaml(load_config_text(y, "resolved")), y);
+  // Stored by a run with its derived c0, it reads back without the contradiction.
+  Params run = p;
+  run.integrator.plastic_c0 = 0.28125, run.c0_from_mesh = true;
+  const Params back = load_stored_config(resolved_yaml(run), "run.h5:/config");
+  EXPECT_EQ(back.material.yield_angle, 17.25);
+  EXPECT_EQ(back.origins.count("integrator.plastic_c0"), 0u);
+}
+
 TEST(Config, StoredConfigWithAYieldRadiusKeepsItsDerivedC0ForReadersOnly) {
   // A run stores the c0 it derived beside the yield radius (for crumple-analyze); read back as
   // a configuration (to resume), the derived value is dropped, so the two do not contradict.

@@ -1,0 +1,232 @@
+#!/usr/bin/env python3
+"""The predictions of the calibrated simulation beside the experiments (issue 36, item 4;
+docs/SCIENCE.md). The yield fold angle is the one constant fitted (yield_calibration.py: P after
+cycle 1 at compaction D equals the experiments' law); everything here is predicted with it,
+from the compaction sweep (pipeline/sweeps/compaction.yaml) at that calibrated material:
+
+1. P after cycles 1..N at D against the law c1 (1 - D) ln(1 + c2 n/D) (cycle 1 is the
+   calibration, marked so): the ratio, whether it lies within ±20 % (the issue's goal) and
+   whether the law lies within 2 s.e.m. of the simulation (the law has no published error).
+2. n0 of the law fitted to that group alone (the increments fit of crumple-analyze ensemble)
+   against the experiments' D/c2, within a factor 1.5 (the goal).
+3. c1 and c2 of the law fitted to every compaction at once (crumple-analyze collapse) against
+   52 and 0.1: c1 within 25 %, c2 within a factor 1.5 (the goals), and the collapse's chi2/dof.
+4. The facet-area shape per cycle: a_fit (maximum likelihood, mean ± s.e.m. over seeds) against
+   the fragmentation model's universal curve at the same mean area, a_univ: within 30 % (the
+   goal); and the Kolmogorov-Smirnov test of phi(xi; a_univ) per run at 5 %: a cycle counts as
+   not rejecting when fewer than half its runs reject (the goal: at least half the cycles).
+
+Writes OUT/PREDICTIONS.md, OUT/predictions.json and the figure (-o). Exit 0; 2 bad input.
+"""
+import argparse
+import json
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
+from common import (add_figure_args, die, experiment, figure_output, load_ensemble,  # noqa: E402
+                    load_json, save_figure)
+
+P_BAND = 0.20        # P(n) within ±20 % of the law
+N0_FACTOR = 1.5      # n0 within a factor 1.5
+C1_BAND = 0.25       # c1 within 25 % of 52
+C2_FACTOR = 1.5      # c2 within a factor 1.5 of 0.1
+A_BAND = 0.30        # a within 30 % of the universal curve
+
+
+def within_factor(x, ref, f):
+    return x is not None and ref > 0 and x > 0 and ref / f <= x <= ref * f
+
+
+def crease_rows(ens, law):
+    rows = []
+    by_n = {c["cycle"]: c for c in law["cycles"]}
+    for c in ens["cycles"]:
+        n = c["cycle"]
+        m, s, ref = c["perimeter_P_mean"], c["perimeter_P_sem"], by_n[n]["law"]
+        rows.append({"cycle": n, "P_mean": m, "P_sem": s, "law": ref, "ratio": m / ref,
+                     "within_band": abs(m / ref - 1) <= P_BAND,
+                     "z": (m - ref) / s if s > 0 else None,
+                     "within_2sem": s > 0 and abs(m - ref) <= 2 * s,
+                     "role": "calibrated" if n == 1 else "predicted"})
+    return rows
+
+
+def facet_rows(ens):
+    rows = []
+    for c in ens["cycles"]:
+        af, au = c.get("a_fit_mean"), c.get("a_univ_mean")
+        tested, rejected = c.get("ks_n_tested", 0), c.get("ks_n_rejected", 0)
+        rows.append({"cycle": c["cycle"], "a_fit": af, "a_fit_sem": c.get("a_fit_sem"), "a_univ": au,
+                     "ratio": af / au if af and au else None,
+                     "within_band": bool(af and au and abs(af / au - 1) <= A_BAND),
+                     "ks_tested": tested, "ks_rejected": rejected,
+                     "ks_not_rejecting": tested > 0 and 2 * rejected < tested,
+                     "single_triangle_fraction": c.get("single_triangle_fraction_mean"),
+                     "n_facets": c.get("n_facets_mean")})
+    return rows
+
+
+def fmt(x, sig=3):
+    return "–" if x is None else f"{x:.{sig}g}"
+
+
+def yes(b):
+    return "yes" if b else "no"
+
+
+def report(doc, fig_name):
+    L = ["# Predictions of the calibrated simulation against the experiments", ""]
+    cal = doc["calibration"]
+    L += [f"The yield fold angle {cal['angle_deg']} ± {cal['sigma_deg']} degrees (c0 = {cal['c0']:.3f}) "
+          f"was fitted so that P after cycle 1 at D = {doc['compaction']} equals the experiments' law "
+          f"({doc['law_note']}). Nothing else is fitted: every other row is a prediction at that "
+          f"material. Resolution: {doc['resolution']}. Uncertainties are the s.e.m. over "
+          f"{doc['n_runs']} seeds; the experimental law carries none.", ""]
+    L += ["## Goals", "", "| goal | result | reached |", "| --- | --- | --- |"]
+    for g in doc["goals"]:
+        L.append(f"| {g['goal']} | {g['result']} | {g['reached']} |")
+    L += ["", f"## 1. P per cycle at D = {doc['compaction']}", "",
+          "| cycle | role | simulation P (L0) | law (L0) | simulation / law | within ±20 % | law within 2 s.e.m. |",
+          "| --- | --- | --- | --- | --- | --- | --- |"]
+    for r in doc["P"]:
+        L.append(f"| {r['cycle']} | {r['role']} | {r['P_mean']:.2f} ± {r['P_sem']:.2f} | {r['law']:.2f} | "
+                 f"{r['ratio']:.2f} | {yes(r['within_band'])} | {yes(r['within_2sem'])} |")
+    n0 = doc["n0"]
+    L += ["", f"The law fitted to this group alone (increments of P): C = {fmt(n0.get('C'))} ± "
+          f"{fmt(n0.get('sigma_C'))} L0, n0 = {fmt(n0.get('n0'))} ± {fmt(n0.get('sigma_n0'))} against the "
+          f"experiments' C = {doc['law_C']:.1f} L0 and n0 = {doc['law_n0']:.2f}.", "",
+          f"![P per cycle against the law]({fig_name})", "", "## 2. The compaction sweep: c1, c2 and the collapse", ""]
+    g = doc["global"]
+    if g:
+        L += [f"Compactions in the fit: {', '.join(str(d) for d in g['compactions'])}. The law fitted to "
+              f"every compaction at once (increments of P): c1 = {g['c1']:.3g} ± {g['sigma_c1']:.2g} "
+              f"(experiments 52), c2 = {g['c2']:.3g} ± {g['sigma_c2']:.2g} (experiments 0.1), "
+              f"χ²/dof = {g['chi2']:.0f}/{g['dof']}"
+              + (": the groups do not collapse onto one curve of the law within their errors."
+                 if g["dof"] > 0 and g["chi2"] / g["dof"] > 2 else ": the groups collapse onto one curve."), ""]
+    else:
+        L += ["No compaction sweep results with more than one compaction: c1 and c2 not predicted.", ""]
+    L += ["## 3. Facet-area shape per cycle", "",
+          "| cycle | a_fit | a_univ | a_fit / a_univ | within 30 % | KS rejects φ(ξ; a_univ) (runs) | single-triangle facets |",
+          "| --- | --- | --- | --- | --- | --- | --- |"]
+    for r in doc["facets"]:
+        L.append(f"| {r['cycle']} | {fmt(r['a_fit'])} ± {fmt(r['a_fit_sem'], 2)} | {fmt(r['a_univ'])} | "
+                 f"{fmt(r['ratio'])} | {yes(r['within_band'])} | {r['ks_rejected']} of {r['ks_tested']} | "
+                 f"{fmt(r['single_triangle_fraction'], 2)} |")
+    L.append("")
+    return "\n".join(L)
+
+
+def plot(doc, path, fmt_):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(9.5, 3.8))
+    n = [r["cycle"] for r in doc["P"]]
+    law = [r["law"] for r in doc["P"]]
+    a1.fill_between(n, [v * (1 - P_BAND) for v in law], [v * (1 + P_BAND) for v in law], color="0.85",
+                    label="law ± 20 %")
+    a1.plot(n, law, "k--", label="experiments' law")
+    a1.errorbar(n, [r["P_mean"] for r in doc["P"]], yerr=[r["P_sem"] for r in doc["P"]], fmt="o",
+                color="C0", capsize=3, label="simulation (cycle 1 calibrated)")
+    a1.set_xlabel("cycle n")
+    a1.set_ylabel(f"P (L0) at D = {doc['compaction']}")
+    a1.legend(fontsize=8)
+    f = [r for r in doc["facets"] if r["a_fit"] is not None]
+    a2.errorbar([r["cycle"] for r in f], [r["a_fit"] for r in f], yerr=[r["a_fit_sem"] or 0 for r in f],
+                fmt="o", color="C0", capsize=3, label="a_fit (simulation)")
+    a2.plot([r["cycle"] for r in f], [r["a_univ"] for r in f], "k--", label="universal curve a_univ")
+    a2.fill_between([r["cycle"] for r in f], [r["a_univ"] * (1 - A_BAND) for r in f],
+                    [r["a_univ"] * (1 + A_BAND) for r in f], color="0.85", label="± 30 %")
+    a2.set_xlabel("cycle n")
+    a2.set_ylabel("facet-area shape a")
+    a2.legend(fontsize=8)
+    fig.tight_layout()
+    save_figure(fig, path, fmt_, 150)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--sweep-results", required=True, help="results/compaction (make sweep SWEEP=compaction)")
+    ap.add_argument("--calibration", required=True, help="calibration.json of make calibrate-yield")
+    ap.add_argument("--points", help="runs/sweeps/compaction/points.json (for the resolution)")
+    ap.add_argument("--compaction", type=float, default=0.27)
+    ap.add_argument("--out", required=True)
+    add_figure_args(ap)
+    a = ap.parse_args()
+    a.output, a.format = figure_output(a)
+    cal = load_json(a.calibration, "yield calibration")
+    if "calibrated" not in cal:
+        die(f"{a.calibration}: the calibration found no angle")
+    group = os.path.join(a.sweep_results, "groups", f"compaction-{a.compaction:g}", "ensemble.json")
+    ens = load_ensemble(group)
+    if ens.get("compaction") != a.compaction:
+        die(f"{group}: crumpled to {ens.get('compaction')}, not {a.compaction}")
+    analyze = []
+    if a.points:
+        pts = load_json(a.points, "points file")["points"]
+        analyze = next((pt.get("analyze_args", []) for pt in pts
+                        if pt["group"] == f"compaction-{a.compaction:g}"), [])
+    law = experiment(a.compaction, [c["cycle"] for c in ens["cycles"]])
+    P = crease_rows(ens, law)
+    facets = facet_rows(ens)
+    fit = ens.get("fits", {}).get("perimeter_P", {}).get("increments", {})
+    n0 = {k: fit.get(k) for k in ("C", "sigma_C", "n0", "sigma_n0", "c1", "c2")}
+    glob = None
+    cpath = os.path.join(a.sweep_results, "collapse.json")
+    if os.path.isfile(cpath):
+        col = load_json(cpath, "collapse file")
+        gf = col["fits"]["perimeter_P"]["increments"]
+        glob = {"compactions": sorted(col["compactions"]), **{k: gf[k] for k in
+                ("c1", "sigma_c1", "c2", "sigma_c2", "chi2", "dof", "at_bound")}}
+    predicted = [r for r in P if r["role"] == "predicted"]
+    goals = [
+        {"goal": f"P(n) within ±20 % of the law, n = 1..{P[-1]['cycle']}",
+         "result": f"{sum(r['within_band'] for r in P)} of {len(P)} cycles "
+                   f"(ratios {min(r['ratio'] for r in P):.2f}-{max(r['ratio'] for r in P):.2f})",
+         "reached": yes(all(r["within_band"] for r in P))},
+        {"goal": f"n0 within a factor 1.5 of {law['n0']:.2f}",
+         "result": f"{fmt(n0['n0'])} ± {fmt(n0['sigma_n0'])}",
+         "reached": yes(within_factor(n0["n0"], law["n0"], N0_FACTOR))},
+    ]
+    if glob:
+        goals += [
+            {"goal": "global c1 within 25 % of 52", "result": f"{glob['c1']:.3g} ± {glob['sigma_c1']:.2g}",
+             "reached": yes(abs(glob["c1"] / law["c1"] - 1) <= C1_BAND)},
+            {"goal": "global c2 within a factor 1.5 of 0.1", "result": f"{glob['c2']:.3g} ± {glob['sigma_c2']:.2g}",
+             "reached": yes(within_factor(glob["c2"], law["c2"], C2_FACTOR))}]
+    else:
+        goals.append({"goal": "global c1 and c2", "result": "no compaction sweep", "reached": "not tested"})
+    nf = len(facets)
+    goals += [
+        {"goal": "facet shape a within 30 % of the universal curve",
+         "result": f"{sum(r['within_band'] for r in facets)} of {nf} cycles", "reached":
+         yes(nf > 0 and all(r["within_band"] for r in facets))},
+        {"goal": "KS not rejecting φ(ξ; a) at 5 % in at least half the cycles",
+         "result": f"{sum(r['ks_not_rejecting'] for r in facets)} of {nf} cycles",
+         "reached": yes(2 * sum(r["ks_not_rejecting"] for r in facets) >= nf > 0)}]
+    nodes = sorted({a_.split("=", 1)[1] for pt in (load_json(a.points, "points file")["points"]
+                                                 if a.points else [])
+                    if pt["group"] == f"compaction-{a.compaction:g}"
+                    for a_ in pt["args"] if a_.startswith("mesh.nodes=")})
+    doc = {"what": "predictions of the calibrated simulation beside the experiments",
+           "calibration": cal["calibrated"], "compaction": a.compaction, "law_note": law["note"],
+           "law_C": law["C"], "law_n0": law["n0"], "n_runs": ens["n_runs"], "seeds": ens.get("seeds"),
+           "resolution": (f"{nodes[0]} nodes, analysed at {' '.join(analyze) or 'the default raster'}"
+                          if len(nodes) == 1 else "as the compaction sweep's points give it"),
+           "source": os.path.relpath(group), "P": P, "n0": n0, "global": glob, "facets": facets,
+           "goals": goals, "predicted_cycles_within_band": sum(r["within_band"] for r in predicted)}
+    os.makedirs(a.out, exist_ok=True)
+    with open(os.path.join(a.out, "predictions.json"), "w") as f:
+        json.dump(doc, f, indent=2)
+        f.write("\n")
+    plot(doc, a.output, a.format)
+    with open(os.path.join(a.out, "PREDICTIONS.md"), "w") as f:
+        f.write(report(doc, os.path.relpath(a.output, a.out)))
+    print(f"predictions: {a.out}/PREDICTIONS.md")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,166 @@
+#!/usr/bin/python3
+"""pipeline/calibration/yield_calibration.py on ensembles built here, and the protocol against
+the kept calibration:
+- P falling exactly exponentially with the angle: the calibrated angle is the exact crossing of
+  the law's value, its uncertainty the seeds' s.e.m. carried through the interpolation;
+- a target above or below every angle's P: exit 3, saying which way to extend the grid;
+- groups crumpled to different compactions: exit 2;
+- protocols/axial_crumpling.yaml states the angle docs/studies/yield_calibration/ found;
+- pipeline/calibration/predictions.py: a simulation 10 % above the law in every cycle, with
+  c1, c2, a and the KS test within their goals, reaches every goal; 50 % above misses the P goal
+  and a collapse far from the law misses c1 and c2.
+
+usage: test_yield_calibration.py   (from the repository root)
+"""
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import unittest
+
+REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+SCRIPT = os.path.join(REPO, "pipeline", "calibration", "yield_calibration.py")
+PREDICT = os.path.join(REPO, "pipeline", "calibration", "predictions.py")
+D = 0.27
+TARGET = 52 * (1 - D) * math.log1p(0.1 / D)  # data/crease_length_law_constants.csv
+
+
+def ensemble(p_mean, p_sem, compaction=D):
+    row = {"cycle": 1, "compaction": compaction, "perimeter_P_mean": p_mean, "perimeter_P_sem": p_sem,
+           "crease_length_L0_mean": 1.5 * p_mean, "crease_length_L0_sem": p_sem}
+    return {"cycles": [row], "fits": {}, "stages": {}, "threshold_sensitivity": {}, "runs": [],
+            "n_runs": 3, "compaction": compaction}
+
+
+class YieldCalibration(unittest.TestCase):
+    def run_case(self, groups):
+        """groups: {angle: ensemble}; returns (exit code, stderr, calibration.json or None)."""
+        tmp = tempfile.mkdtemp()
+        pts = {"points": []}
+        for angle, e in groups.items():
+            g = f"yield_angle-{angle:g}"
+            pts["points"].append({"group": g, "values": {"material.yield_angle": angle}})
+            os.makedirs(os.path.join(tmp, "groups", g))
+            with open(os.path.join(tmp, "groups", g, "ensemble.json"), "w") as f:
+                json.dump(e, f)
+        with open(os.path.join(tmp, "points.json"), "w") as f:
+            json.dump(pts, f)
+        out = os.path.join(tmp, "out")
+        r = subprocess.run([sys.executable, SCRIPT, "--points", os.path.join(tmp, "points.json"),
+                            "--groups", os.path.join(tmp, "groups"), "--out", out,
+                            "-o", os.path.join(out, "calibration.svg")],
+                           capture_output=True, text=True)
+        path = os.path.join(out, "calibration.json")
+        doc = None
+        if os.path.isfile(path):
+            with open(path) as f:
+                doc = json.load(f)
+        return r.returncode, r.stderr, doc, out
+
+    def test_exponential_fall_gives_the_exact_crossing(self):
+        a, b, rel = 5.9, 0.09, 0.05
+        angles = [28.0, 32.0, 36.0, 40.0]
+        code, err, doc, out = self.run_case(
+            {t: ensemble(math.exp(a - b * t), rel * math.exp(a - b * t)) for t in angles})
+        self.assertEqual(code, 0, err)
+        exact = (a - math.log(TARGET)) / b
+        got = doc["interpolation"]
+        self.assertAlmostEqual(got["angle_deg"], exact, places=9)
+        self.assertAlmostEqual(got["dlnP_dangle"], -b, places=9)
+        lo = max(t for t in angles if t <= exact)
+        self.assertEqual(got["between_deg"], [lo, lo + 4])
+        t = (exact - lo) / 4
+        self.assertAlmostEqual(got["sigma_deg"], math.hypot((1 - t) * rel, t * rel) / b, places=9)
+        self.assertAlmostEqual(doc["line_fit"]["angle_deg"], exact, places=6)
+        self.assertAlmostEqual(doc["target_P_L0"], TARGET, places=9)
+        self.assertAlmostEqual(doc["calibrated"]["c0"], 2 * math.sin(math.radians(exact) / 2), places=9)
+        for f in ("calibration.csv", "CALIBRATION.md", "calibration.svg"):
+            self.assertTrue(os.path.isfile(os.path.join(out, f)), f)
+        with open(os.path.join(out, "CALIBRATION.md")) as f:
+            self.assertIn(f"{exact:.1f} ± ", f.read())
+
+    def test_target_outside_the_bracket_says_which_way(self):
+        code, err, doc, _ = self.run_case({30.0: ensemble(40, 2), 34.0: ensemble(30, 2)})
+        self.assertEqual(code, 3)
+        self.assertIn("add larger angles", err)
+        self.assertIsNone(doc["interpolation"])
+        code, err, _, _ = self.run_case({30.0: ensemble(5, 1), 34.0: ensemble(3, 1)})
+        self.assertEqual(code, 3)
+        self.assertIn("add smaller angles", err)
+
+    def test_mixed_compactions_are_refused(self):
+        code, err, _, _ = self.run_case({30.0: ensemble(20, 2), 34.0: ensemble(8, 1, compaction=0.18)})
+        self.assertEqual(code, 2)
+        self.assertIn("different or unknown compactions", err)
+
+    def test_the_protocol_states_the_kept_calibration(self):
+        with open(os.path.join(REPO, "docs", "studies", "yield_calibration", "calibration.json")) as f:
+            kept = json.load(f)
+        with open(os.path.join(REPO, "protocols", "axial_crumpling.yaml")) as f:
+            m = re.search(r"^\s+yield_angle:\s*([0-9.eE+-]+)\s*$", f.read(), re.M)
+        self.assertIsNotNone(m, "protocols/axial_crumpling.yaml states no material.yield_angle")
+        self.assertEqual(float(m.group(1)), kept["calibrated"]["angle_deg"],
+                         "the protocol's yield angle is not the kept calibration's "
+                         "(docs/studies/yield_calibration/; make calibrate-yield)")
+        self.assertAlmostEqual(kept["target_P_L0"], TARGET, places=6)
+
+
+
+def law(n):
+    return 52 * (1 - D) * math.log1p(0.1 * n / D)
+
+
+class Predictions(unittest.TestCase):
+    def run_case(self, factor, c1=50.0, c2=0.12):
+        tmp = tempfile.mkdtemp()
+        rows = []
+        for n in range(1, 11):
+            rows.append({"cycle": n, "compaction": D, "perimeter_P_mean": factor * law(n),
+                         "perimeter_P_sem": 1.0, "a_fit_mean": 3.6, "a_fit_sem": 0.3,
+                         "a_univ_mean": 3.0, "ks_n_tested": 3, "ks_n_rejected": 1 if n % 2 else 2,
+                         "single_triangle_fraction_mean": 0.1, "n_facets_mean": 300})
+        ens = {"cycles": rows, "stages": {}, "threshold_sensitivity": {}, "runs": [], "n_runs": 3,
+               "compaction": D, "seeds": [1, 2, 3],
+               "fits": {"perimeter_P": {"increments": {"C": 38.0, "sigma_C": 3.0, "n0": 2.5,
+                                                        "sigma_n0": 0.5}}}}
+        os.makedirs(os.path.join(tmp, "groups", "compaction-0.27"))
+        with open(os.path.join(tmp, "groups", "compaction-0.27", "ensemble.json"), "w") as f:
+            json.dump(ens, f)
+        with open(os.path.join(tmp, "collapse.json"), "w") as f:
+            json.dump({"compactions": [0.63, 0.27, 0.18], "fits": {"perimeter_P": {"increments": {
+                "c1": c1, "sigma_c1": 1.0, "c2": c2, "sigma_c2": 0.01, "chi2": 50.0, "dof": 28,
+                "at_bound": False}}}}, f)
+        with open(os.path.join(tmp, "cal.json"), "w") as f:
+            json.dump({"calibrated": {"angle_deg": 37.1, "sigma_deg": 1.0, "c0": 0.636}}, f)
+        r = subprocess.run([sys.executable, PREDICT, "--sweep-results", tmp, "--calibration",
+                            os.path.join(tmp, "cal.json"), "--out", os.path.join(tmp, "out"),
+                            "-o", os.path.join(tmp, "out", "p.svg")], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(tmp, "out", "predictions.json")) as f:
+            doc = json.load(f)
+        with open(os.path.join(tmp, "out", "PREDICTIONS.md")) as f:
+            md = f.read()
+        return {g["goal"].split(" within")[0]: g["reached"] for g in doc["goals"]}, doc, md
+
+    def test_within_every_goal(self):
+        goals, doc, md = self.run_case(1.1)
+        self.assertEqual(set(goals.values()), {"yes"}, goals)
+        self.assertEqual(doc["P"][0]["role"], "calibrated")
+        self.assertAlmostEqual(doc["P"][4]["ratio"], 1.1, places=9)
+        self.assertEqual(sum(r["ks_not_rejecting"] for r in doc["facets"]), 5)
+        self.assertIn("| 5 | predicted |", md)
+
+    def test_misses_are_reported(self):
+        goals, doc, md = self.run_case(1.5, c1=20.0, c2=1.0)
+        self.assertEqual(goals["P(n)"], "no")
+        self.assertEqual(goals["global c1"], "no")
+        self.assertEqual(goals["global c2"], "no")
+        self.assertFalse(any(r["within_band"] for r in doc["P"]))
+        self.assertIn("| 0 of 10 cycles (ratios 1.50-1.50) | no |", md)
+
+
+if __name__ == "__main__":
+    unittest.main()
