@@ -57,11 +57,12 @@ calibrate-yield:
 # compaction sweep at the protocol's calibrated yield angle (make sweep SWEEP=compaction, resumable;
 # PREDICT_GROUPS limits it to some compactions, e.g. the five a session affords, and the report says
 # which were fitted). The calibration is the kept one the protocol states
-# (docs/studies/yield_calibration/). Writes results/predictions/PREDICTIONS.md, .json and the figure.
+# (docs/studies/yield_calibration/). Writes results/compaction/PREDICTIONS.md, predictions.json and
+# the figure beside the sweep's report, so that make keep-study SWEEP=compaction keeps them too.
 PREDICT_GROUPS ?=
 .PHONY: predictions
 predictions:
 	$(MAKE) --no-print-directory sweep SWEEP=compaction SWEEP_GROUPS="$(PREDICT_GROUPS)"
 	$(PYTHON) pipeline/calibration/predictions.py --sweep-results $(RESULTS)/compaction \
 	  --points runs/sweeps/compaction/points.json --calibration docs/studies/yield_calibration/calibration.json \
-	  --out $(RESULTS)/predictions -o $(RESULTS)/predictions/predictions.$(FIG_FORMAT)
+	  --out $(RESULTS)/compaction -o $(RESULTS)/compaction/predictions.$(FIG_FORMAT)

@@ -114,7 +114,7 @@ def law(n):
 
 
 class Predictions(unittest.TestCase):
-    def run_case(self, factor, c1=50.0, c2=0.12):
+    def run_case(self, factor, c1=50.0, c2=0.12, compactions=(0.63, 0.27, 0.18)):
         tmp = tempfile.mkdtemp()
         rows = []
         for n in range(1, 11):
@@ -130,7 +130,7 @@ class Predictions(unittest.TestCase):
         with open(os.path.join(tmp, "groups", "compaction-0.27", "ensemble.json"), "w") as f:
             json.dump(ens, f)
         with open(os.path.join(tmp, "collapse.json"), "w") as f:
-            json.dump({"compactions": [0.63, 0.27, 0.18], "fits": {"perimeter_P": {"increments": {
+            json.dump({"compactions": list(compactions), "fits": {"perimeter_P": {"increments": {
                 "c1": c1, "sigma_c1": 1.0, "c2": c2, "sigma_c2": 0.01, "chi2": 50.0, "dof": 28,
                 "at_bound": False}}}}, f)
         with open(os.path.join(tmp, "cal.json"), "w") as f:
@@ -144,6 +144,12 @@ class Predictions(unittest.TestCase):
         with open(os.path.join(tmp, "out", "PREDICTIONS.md")) as f:
             md = f.read()
         return {g["goal"].split(" within")[0]: g["reached"] for g in doc["goals"]}, doc, md
+
+    def test_one_compaction_is_no_collapse(self):
+        goals, doc, md = self.run_case(1.1, compactions=(0.27,))
+        self.assertEqual(goals["global c1 and c2"], "not tested")
+        self.assertIsNone(doc["global"])
+        self.assertIn("fewer than two compactions", md)
 
     def test_within_every_goal(self):
         goals, doc, md = self.run_case(1.1)
