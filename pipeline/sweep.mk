@@ -73,11 +73,16 @@ keep-study:
 	$(PYTHON) pipeline/sweeps/keep_study.py --points $(SWEEP_DIR)/points.json \
 	  --results $(SWEEP_RESULTS) --out docs/studies/$(SWEEP)
 
-# make study-figures: the collapse and convergence figures of every kept study, from its JSON (the
-# per-group figure, crease_length.png, comes with make sweep, which has the ensembles).
+# make study-figures: the collapse, convergence, calibration and prediction figures of every kept
+# study, from its JSON (the per-group figure, crease_length.png, comes with make sweep, which has
+# the ensembles).
 study-figures:
 	@for d in docs/studies/*/; do \
 	  if [ -f $$d/collapse.json ]; then $(PYTHON) pipeline/plots/plot_sweep.py --results $$d \
 	    --collapse-only && echo "$$d"collapse.png || exit 1; fi; \
 	  if [ -f $$d/convergence.json ]; then $(PYTHON) pipeline/plots/plot_sweep.py --results $$d \
-	    --convergence-only && echo "$$d"convergence.png || exit 1; fi; done
+	    --convergence-only && echo "$$d"convergence.png || exit 1; fi; \
+	  if [ -f $$d/calibration.json ]; then $(PYTHON) pipeline/calibration/yield_calibration.py \
+	    --replot $$d/calibration.json -o $$d/calibration.png && echo "$$d"calibration.png || exit 1; fi; \
+	  if [ -f $$d/predictions.json ]; then $(PYTHON) pipeline/calibration/predictions.py \
+	    --replot $$d/predictions.json -o $$d/predictions.png && echo "$$d"predictions.png || exit 1; fi; done

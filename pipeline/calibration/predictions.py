@@ -150,14 +150,21 @@ def plot(doc, path, fmt_):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--sweep-results", required=True, help="results/compaction (make sweep SWEEP=compaction)")
-    ap.add_argument("--calibration", required=True, help="calibration.json of make calibrate-yield")
+    ap.add_argument("--sweep-results", help="results/compaction (make sweep SWEEP=compaction)")
+    ap.add_argument("--calibration", help="calibration.json of make calibrate-yield")
+    ap.add_argument("--replot", metavar="PREDICTIONS_JSON",
+                    help="only redraw the figure from a kept predictions.json (make study-figures)")
     ap.add_argument("--points", help="runs/sweeps/compaction/points.json (for the resolution)")
     ap.add_argument("--compaction", type=float, default=0.27)
-    ap.add_argument("--out", required=True)
+    ap.add_argument("--out")
     add_figure_args(ap)
     a = ap.parse_args()
     a.output, a.format = figure_output(a)
+    if a.replot:
+        plot(load_json(a.replot, "predictions file"), a.output, a.format)
+        return
+    if not (a.sweep_results and a.calibration and a.out):
+        die("give --sweep-results, --calibration and --out (or --replot PREDICTIONS_JSON)")
     cal = load_json(a.calibration, "yield calibration")
     if "calibrated" not in cal:
         die(f"{a.calibration}: the calibration found no angle")

@@ -169,12 +169,20 @@ def plot(rows, target, result, fit, path, fmt):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--points", required=True, help="runs/sweeps/yield_calibration/points.json")
-    ap.add_argument("--groups", required=True, help="results/yield_calibration/groups")
-    ap.add_argument("--out", required=True, help="folder for the calibration's files")
+    ap.add_argument("--points", help="runs/sweeps/yield_calibration/points.json")
+    ap.add_argument("--groups", help="results/yield_calibration/groups")
+    ap.add_argument("--out", help="folder for the calibration's files")
+    ap.add_argument("--replot", metavar="CALIBRATION_JSON",
+                    help="only redraw the figure from a kept calibration.json (make study-figures)")
     add_figure_args(ap)
     a = ap.parse_args()
     a.output, a.format = figure_output(a)
+    if a.replot:
+        doc = load_json(a.replot, "calibration file")
+        plot(doc["rows"], doc["target_P_L0"], doc["interpolation"], doc["line_fit"], a.output, a.format)
+        return
+    if not (a.points and a.groups and a.out):
+        die("give --points, --groups and --out (or --replot CALIBRATION_JSON)")
     points = load_json(a.points, "points file")
     rows = angle_rows(points, a.groups)
     if len(rows) < 2:

@@ -81,6 +81,11 @@ class YieldCalibration(unittest.TestCase):
             self.assertTrue(os.path.isfile(os.path.join(out, f)), f)
         with open(os.path.join(out, "CALIBRATION.md")) as f:
             self.assertIn(f"{exact:.1f} ± ", f.read())
+        # make study-figures redraws the figure from the kept JSON alone.
+        r = subprocess.run([sys.executable, SCRIPT, "--replot", os.path.join(out, "calibration.json"),
+                            "-o", os.path.join(out, "again.svg")], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertTrue(os.path.isfile(os.path.join(out, "again.svg")))
 
     def test_target_outside_the_bracket_says_which_way(self):
         code, err, doc, _ = self.run_case({30.0: ensemble(40, 2), 34.0: ensemble(30, 2)})
@@ -141,6 +146,7 @@ class Predictions(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stderr)
         with open(os.path.join(tmp, "out", "predictions.json")) as f:
             doc = json.load(f)
+        doc["_path"] = os.path.join(tmp, "out", "predictions.json")
         with open(os.path.join(tmp, "out", "PREDICTIONS.md")) as f:
             md = f.read()
         return {g["goal"].split(" within")[0]: g["reached"] for g in doc["goals"]}, doc, md
@@ -158,6 +164,10 @@ class Predictions(unittest.TestCase):
         self.assertAlmostEqual(doc["P"][4]["ratio"], 1.1, places=9)
         self.assertEqual(sum(r["ks_not_rejecting"] for r in doc["facets"]), 5)
         self.assertIn("| 5 | predicted |", md)
+        r = subprocess.run([sys.executable, PREDICT, "--replot", doc["_path"], "-o",
+                            doc["_path"] + ".svg"], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertTrue(os.path.isfile(doc["_path"] + ".svg"))
 
     def test_misses_are_reported(self):
         goals, doc, md = self.run_case(1.5, c1=20.0, c2=1.0)
