@@ -106,7 +106,7 @@ def write_outputs(out, rows, target, law, result, fit, fig_path, fig_fmt):
     if result:
         doc["calibrated"] = {"angle_deg": round(result["angle_deg"], 1),
                              "sigma_deg": round(result["sigma_deg"], 1),
-                             "c0": 2 * math.sin(math.radians(result["angle_deg"]) / 2)}
+                             "c0": 2 * math.sin(math.radians(round(result["angle_deg"], 1)) / 2)}
     with open(os.path.join(out, "calibration.json"), "w") as f:
         json.dump(doc, f, indent=2)
         f.write("\n")

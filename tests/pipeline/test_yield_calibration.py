@@ -76,7 +76,7 @@ class YieldCalibration(unittest.TestCase):
         self.assertAlmostEqual(got["sigma_deg"], math.hypot((1 - t) * rel, t * rel) / b, places=9)
         self.assertAlmostEqual(doc["line_fit"]["angle_deg"], exact, places=6)
         self.assertAlmostEqual(doc["target_P_L0"], TARGET, places=9)
-        self.assertAlmostEqual(doc["calibrated"]["c0"], 2 * math.sin(math.radians(exact) / 2), places=9)
+        self.assertAlmostEqual(doc["calibrated"]["c0"], 2 * math.sin(math.radians(round(exact, 1)) / 2), places=9)
         for f in ("calibration.csv", "CALIBRATION.md", "calibration.svg"):
             self.assertTrue(os.path.isfile(os.path.join(out, f)), f)
         with open(os.path.join(out, "CALIBRATION.md")) as f:
@@ -175,7 +175,7 @@ class Predictions(unittest.TestCase):
         self.assertEqual(goals["global c1"], "no")
         self.assertEqual(goals["global c2"], "no")
         self.assertFalse(any(r["within_band"] for r in doc["P"]))
-        self.assertIn("| 0 of 10 cycles (ratios 1.50-1.50) | no |", md)
+        self.assertIn("| 0 of 9 cycles (ratios 1.50-1.50; cycle 1, the calibration, 1.50) | no |", md)
 
 
 if __name__ == "__main__":
