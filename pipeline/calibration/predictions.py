@@ -172,11 +172,12 @@ def main():
     ens = load_ensemble(group)
     if ens.get("compaction") != a.compaction:
         die(f"{group}: crumpled to {ens.get('compaction')}, not {a.compaction}")
-    analyze = []
-    if a.points:
-        pts = load_json(a.points, "points file")["points"]
-        analyze = next((pt.get("analyze_args", []) for pt in pts
-                        if pt["group"] == f"compaction-{a.compaction:g}"), [])
+    # The group's points (optional): the resolution and the analysis options they ran with.
+    own = [pt for pt in (load_json(a.points, "points file")["points"] if a.points else [])
+           if pt["group"] == f"compaction-{a.compaction:g}"]
+    analyze = own[0].get("analyze_args", []) if own else []
+    nodes = sorted({arg.split("=", 1)[1] for pt in own for arg in pt["args"]
+                    if arg.startswith("mesh.nodes=")})
     law = experiment(a.compaction, [c["cycle"] for c in ens["cycles"]])
     P = crease_rows(ens, law)
     facets = facet_rows(ens)
@@ -217,10 +218,6 @@ def main():
         {"goal": "KS not rejecting φ(ξ; a) at 5 % in at least half the cycles",
          "result": f"{sum(r['ks_not_rejecting'] for r in facets)} of {nf} cycles",
          "reached": yes(2 * sum(r["ks_not_rejecting"] for r in facets) >= nf > 0)}]
-    nodes = sorted({a_.split("=", 1)[1] for pt in (load_json(a.points, "points file")["points"]
-                                                 if a.points else [])
-                    if pt["group"] == f"compaction-{a.compaction:g}"
-                    for a_ in pt["args"] if a_.startswith("mesh.nodes=")})
     doc = {"what": "predictions of the calibrated simulation beside the experiments",
            "calibration": cal["calibrated"], "compaction": a.compaction, "law_note": law["note"],
            "law_C": law["C"], "law_n0": law["n0"], "n_runs": ens["n_runs"], "seeds": ens.get("seeds"),

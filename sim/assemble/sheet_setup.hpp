@@ -29,9 +29,8 @@ ContactSettings contact_settings(const ContactParams& c, const Mesh& mesh,
 /// c0 = 2 sin(w / (2 R_y)). A yield radius is a property of the sheet; c0 is per hinge and so
 /// per mesh: R_y = 8.1 mm is c0 = 0.30 on the 10 cm sheet at 1500 nodes and 0.105 at 12000
 /// (docs/MODEL.md §7.5). When material.yield_angle theta_y is set instead, c0 = 2 sin(theta_y / 2)
-/// on every mesh: the yield of a fold narrower than any hinge, which a mesh whose edges are many
-/// sheet thicknesses long always concentrates on one hinge (§7.6). Throws InputError when R_y is
-/// so small that w / R_y >= pi.
+/// on every mesh: the yield of a fold narrower than a hinge, which the mesh puts on one hinge
+/// (§7.6, with its measured limits). Throws InputError when R_y is so small that w / R_y >= pi.
 double plastic_c0(const Params& p, const Mesh& mesh);
 
 /// The integrator's settings of a run on `mesh` (plastic_c0 as above).

@@ -72,8 +72,9 @@ struct Params {
   ProtocolParams protocol;
   OutputParams output;
   std::string file;              ///< the config's path (for messages)
-  /// True once integrator.plastic_c0 holds the value material.yield_radius or yield_angle gives on the run's
-  /// mesh (sim/assemble/sheet_setup.hpp, resolved_for_mesh); resolved_yaml then writes it.
+  /// True once integrator.plastic_c0 holds the value material.yield_radius or yield_angle gives
+  /// on the run's mesh (sim/assemble/sheet_setup.hpp, resolved_for_mesh); resolved_yaml then
+  /// writes it.
   bool c0_from_mesh = false;
   /// Where each key the input gave was set: dotted key -> "FILE:LINE:COL" or "--set key=value"
   /// (for messages about relations checked after loading). Keys left at their default are absent.
