@@ -104,6 +104,13 @@ void add_run_options(CLI::App& app, AnalyzeOptions& opt, double& absolute) {
   app.add_option("--close-px", opt.segment.close_px,
                  "closing kernel (pixels) that bridges small gaps in creases; <= 1 disables")
       ->capture_default_str();
+  app.add_option("--watershed-h-px", opt.segment.watershed_h_px,
+                 "also cut facets at their necks, as the experiments' segmentation does: a marker "
+                 "watershed of the distance to the nearest crease, seeded at the domes higher "
+                 "than this many pixels (the experiments used 4); 0 = no cuts, a gap in a crease "
+                 "merges the facets on its two sides")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--crease-px", opt.crease_px, "crease line width in pixels (1 or 2)")
       ->capture_default_str()
       ->check(CLI::Range(1, 3));

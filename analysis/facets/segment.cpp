@@ -1,6 +1,8 @@
 // Facet segmentation with OpenCV; see segment.hpp for the steps.
 #include "analysis/facets/segment.hpp"
 
+#include "analysis/facets/neck_cuts.hpp"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -61,6 +63,7 @@ Segmentation segment_facets(const cv::Mat& sheet_in, const cv::Mat& creases_in,
     cv::morphologyEx(creases, creases, cv::MORPH_CLOSE, k);
   }
   creases &= sheet;
+  if (params.watershed_h_px > 0) creases |= watershed_neck_cuts(sheet & ~creases, params.watershed_h_px);
   seg.sheet_px = cv::countNonZero(sheet);
   seg.crease_px = cv::countNonZero(creases);
   const cv::Mat free = sheet & ~creases;

@@ -1,7 +1,10 @@
 // Facet segmentation of a crease map (docs/STATISTICS.md §1 "Facet segmentation"):
 // facets are the regions of the sheet bounded by creases and the sheet border.
 //
-//   1. close small gaps in the crease layer (morphological closing, close_px wide);
+//   1. close small gaps in the crease layer (morphological closing, close_px wide); with
+//      watershed_h_px > 0, also cut the regions between the creases at their necks, as the
+//      experiments' automated segmentation does (neck_cuts.hpp), so that a crease broken by a gap
+//      still bounds two facets;
 //   2. label the sheet pixels that are not crease pixels, 4-connected
 //      (cv::connectedComponentsWithStats), so 8-connected crease lines separate regions;
 //   3. drop specks smaller than min_facet_px pixels (rasterisation debris at crease junctions);
@@ -21,6 +24,10 @@ namespace crumple::analysis {
 struct SegmentParams {
   int close_px = 3;      ///< closing kernel size in pixels; <= 1 disables the closing
   int min_facet_px = 5;  ///< regions below this many pixels (before growth) are specks
+  /// Depth in pixels of the distance-map domes that seed the neck cuts (the h of the
+  /// experiments' h-maxima markers, docs/STATISTICS.md §1); 0 = no cuts, facets are the plain
+  /// connected regions between the creases.
+  double watershed_h_px = 0.0;
 };
 
 struct Facet {

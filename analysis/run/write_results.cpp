@@ -96,6 +96,7 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
       {"crease_px", opt.crease_px},
       {"close_px", opt.segment.close_px},
       {"min_facet_px", opt.segment.min_facet_px},
+      {"watershed_h_px", opt.segment.watershed_h_px},
       {"bootstrap_resamples", opt.bootstrap},
       {"seed", opt.seed},
       {"area_bin_ratio", kAreaBinRatio},
