@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The predictions of the calibrated simulation beside the experiments (issue 36, item 4;
-docs/SCIENCE.md). The yield fold angle is the one constant fitted (yield_calibration.py: P after
+docs/SCIENCE.md). The yield (an angle or a radius) is the one constant fitted (yield_calibration.py: P after
 cycle 1 at compaction D equals the experiments' law); everything here is predicted with it,
 from the compaction sweep (pipeline/sweeps/compaction.yaml) at that calibrated material:
 
@@ -76,10 +76,20 @@ def yes(b):
     return "yes" if b else "no"
 
 
+def material_text(cal):
+    """The calibrated yield in words, from yield_calibration.py's "calibrated" block (or the
+    older one that knew only the angle)."""
+    if "angle_deg" in cal:
+        return f"The yield fold angle {cal['angle_deg']} ± {cal['sigma_deg']} degrees (c0 = {cal['c0']:.3f})"
+    name = cal["key"].split(".")[-1].replace("_", " ")
+    c0 = f" (c0 = {cal['c0']:.3f})" if cal.get("c0") is not None else ""
+    return f"The {name} {cal['value']} ± {cal['sigma']} {cal['unit']}{c0}"
+
+
 def report(doc, fig_name):
     L = ["# Predictions of the calibrated simulation against the experiments", ""]
     cal = doc["calibration"]
-    L += [f"The yield fold angle {cal['angle_deg']} ± {cal['sigma_deg']} degrees (c0 = {cal['c0']:.3f}) "
+    L += [f"{material_text(cal)} "
           f"was fitted so that P after cycle 1 at D = {doc['compaction']} equals the experiments' law "
           f"({doc['law_note']}). Nothing else is fitted: every other row is a prediction at that "
           f"material. Resolution: {doc['resolution']}. Uncertainties are the s.e.m. over "
@@ -167,7 +177,7 @@ def main():
         die("give --sweep-results, --calibration and --out (or --replot PREDICTIONS_JSON)")
     cal = load_json(a.calibration, "yield calibration")
     if "calibrated" not in cal:
-        die(f"{a.calibration}: the calibration found no angle")
+        die(f"{a.calibration}: the calibration found no yield")
     group = os.path.join(a.sweep_results, "groups", f"compaction-{a.compaction:g}", "ensemble.json")
     ens = load_ensemble(group)
     if ens.get("compaction") != a.compaction:

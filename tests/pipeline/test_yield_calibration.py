@@ -36,13 +36,14 @@ def ensemble(p_mean, p_sem, compaction=D):
 
 
 class YieldCalibration(unittest.TestCase):
-    def run_case(self, groups):
-        """groups: {angle: ensemble}; returns (exit code, stderr, calibration.json or None)."""
+    def run_case(self, groups, key="material.yield_angle"):
+        """groups: {value of key: ensemble}; returns (exit code, stderr, calibration.json or
+        None, output folder)."""
         tmp = tempfile.mkdtemp()
         pts = {"points": []}
-        for angle, e in groups.items():
-            g = f"yield_angle-{angle:g}"
-            pts["points"].append({"group": g, "values": {"material.yield_angle": angle}})
+        for value, e in groups.items():
+            g = f"{key.split('.')[-1]}-{value:g}"
+            pts["points"].append({"group": g, "values": {key: value}})
             os.makedirs(os.path.join(tmp, "groups", g))
             with open(os.path.join(tmp, "groups", g, "ensemble.json"), "w") as f:
                 json.dump(e, f)
@@ -68,19 +69,19 @@ class YieldCalibration(unittest.TestCase):
         self.assertEqual(code, 0, err)
         exact = (a - math.log(TARGET)) / b
         got = doc["interpolation"]
-        self.assertAlmostEqual(got["angle_deg"], exact, places=9)
-        self.assertAlmostEqual(got["dlnP_dangle"], -b, places=9)
+        self.assertAlmostEqual(got["value"], exact, places=9)
+        self.assertAlmostEqual(got["dlnP_dvalue"], -b, places=9)
         lo = max(t for t in angles if t <= exact)
-        self.assertEqual(got["between_deg"], [lo, lo + 4])
+        self.assertEqual(got["between"], [lo, lo + 4])
         t = (exact - lo) / 4
-        self.assertAlmostEqual(got["sigma_deg"], math.hypot((1 - t) * rel, t * rel) / b, places=9)
-        self.assertAlmostEqual(doc["line_fit"]["angle_deg"], exact, places=6)
+        self.assertAlmostEqual(got["sigma"], math.hypot((1 - t) * rel, t * rel) / b, places=9)
+        self.assertAlmostEqual(doc["line_fit"]["value"], exact, places=6)
         self.assertAlmostEqual(doc["target_P_L0"], TARGET, places=9)
         self.assertAlmostEqual(doc["calibrated"]["c0"], 2 * math.sin(math.radians(round(exact, 1)) / 2), places=9)
         for f in ("calibration.csv", "CALIBRATION.md", "calibration.svg"):
             self.assertTrue(os.path.isfile(os.path.join(out, f)), f)
         with open(os.path.join(out, "CALIBRATION.md")) as f:
-            self.assertIn(f"{exact:.1f} ± ", f.read())
+            self.assertIn(f"{exact:.2f} ± ", f.read())
         # make study-figures redraws the figure from the kept JSON alone.
         r = subprocess.run([sys.executable, SCRIPT, "--replot", os.path.join(out, "calibration.json"),
                             "-o", os.path.join(out, "again.svg")], capture_output=True, text=True)
@@ -90,11 +91,30 @@ class YieldCalibration(unittest.TestCase):
     def test_target_outside_the_bracket_says_which_way(self):
         code, err, doc, _ = self.run_case({30.0: ensemble(40, 2), 34.0: ensemble(30, 2)})
         self.assertEqual(code, 3)
-        self.assertIn("add larger angles", err)
+        self.assertIn("to 34 degrees: add larger values", err)
         self.assertIsNone(doc["interpolation"])
         code, err, _, _ = self.run_case({30.0: ensemble(5, 1), 34.0: ensemble(3, 1)})
         self.assertEqual(code, 3)
-        self.assertIn("add smaller angles", err)
+        self.assertIn("to 30 degrees: add smaller values", err)
+
+    def test_a_radius_calibration_rises_and_is_read_in_metres(self):
+        # P rises with the yield radius: exp(1.2 + 0.4 r/mm), crossing the target between 3 and 4 mm.
+        radii_m = [2.0e-3, 3.0e-3, 4.0e-3]
+        code, err, doc, out = self.run_case(
+            {r: ensemble(math.exp(1.2 + 400 * r), 0.05 * math.exp(1.2 + 400 * r)) for r in radii_m},
+            key="material.yield_radius")
+        self.assertEqual(code, 0, err)
+        exact_mm = (math.log(TARGET) - 1.2) / 0.4
+        self.assertAlmostEqual(doc["interpolation"]["value"], exact_mm, places=9)
+        self.assertEqual(doc["interpolation"]["between"], [3.0, 4.0])
+        self.assertEqual(doc["calibrated"]["unit"], "mm")
+        self.assertAlmostEqual(doc["calibrated"]["key_value"], round(exact_mm, 2) * 1e-3, places=12)
+        self.assertIsNone(doc["calibrated"]["c0"])  # each mesh derives its own
+        # Too stiff everywhere: extend toward larger radii.
+        code, err, _, _ = self.run_case({2.0e-3: ensemble(4, 1), 3.0e-3: ensemble(6, 1)},
+                                        key="material.yield_radius")
+        self.assertEqual(code, 3)
+        self.assertIn("to 3 mm: add larger values", err)
 
     def test_mixed_compactions_are_refused(self):
         code, err, _, _ = self.run_case({30.0: ensemble(20, 2), 34.0: ensemble(8, 1, compaction=0.18)})
@@ -102,16 +122,22 @@ class YieldCalibration(unittest.TestCase):
         self.assertIn("different or unknown compactions", err)
 
     def test_the_protocol_states_the_kept_calibration(self):
-        with open(os.path.join(REPO, "docs", "studies", "yield_calibration", "calibration.json")) as f:
-            kept = json.load(f)
+        # The protocol states the yield one way; the kept calibration of that statement must
+        # have found the protocol's value.
+        kept_dir = {"yield_angle": "yield_calibration", "yield_radius": "yield_radius_calibration"}
         with open(os.path.join(REPO, "protocols", "axial_crumpling.yaml")) as f:
-            m = re.search(r"^\s+yield_angle:\s*([0-9.eE+-]+)\s*$", f.read(), re.M)
-        self.assertIsNotNone(m, "protocols/axial_crumpling.yaml states no material.yield_angle")
-        self.assertEqual(float(m.group(1)), kept["calibrated"]["angle_deg"],
-                         "the protocol's yield angle is not the kept calibration's "
-                         "(docs/studies/yield_calibration/; make calibrate-yield)")
+            stated = dict(re.findall(r"^\s+(yield_angle|yield_radius):\s*([0-9.eE+-]+)\s*(?:#.*)?$",
+                                     f.read(), re.M))
+        self.assertEqual(len(stated), 1, f"protocols/axial_crumpling.yaml states {stated}: "
+                         "exactly one of material.yield_angle and material.yield_radius")
+        name, value = stated.popitem()
+        with open(os.path.join(REPO, "docs", "studies", kept_dir[name], "calibration.json")) as f:
+            kept = json.load(f)
+        self.assertEqual(kept["calibrated"]["key"], "material." + name)
+        self.assertAlmostEqual(float(value), kept["calibrated"]["key_value"], places=12,
+                               msg=f"the protocol's {name} is not the kept calibration's "
+                               f"(docs/studies/{kept_dir[name]}/; make calibrate-yield)")
         self.assertAlmostEqual(kept["target_P_L0"], TARGET, places=6)
-
 
 
 def law(n):
