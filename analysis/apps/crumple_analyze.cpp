@@ -81,7 +81,8 @@ void add_run_options(CLI::App& app, AnalyzeOptions& opt, double& absolute) {
       app.add_option("--threshold-c0", opt.threshold_c0,
                      "crease when |p| > F c0, c0 the run's yield curvature (integrator.plastic_c0 "
                      "in /config): the hinge keeps a permanent set of at least F times the "
-                     "largest bend the sheet takes back elastically")
+                     "largest bend the sheet takes back elastically; the default unless the run's "
+                     "/config states output.crease_angle (then |p| > 2 sin(angle/2))")
           ->capture_default_str()
           ->check(CLI::PositiveNumber);
   app.add_option("--threshold", absolute,
@@ -254,5 +255,6 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (app.count("--threshold")) opt.threshold = absolute;
+  if (app.count("--threshold-c0")) opt.threshold_c0_given = true;
   return analyze_main(run_path, out_dir, opt);
 }

@@ -1,6 +1,8 @@
 // Crease threshold rules; see threshold_rule.hpp.
 #include "analysis/creases/threshold_rule.hpp"
 
+#include <cmath>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -51,6 +53,20 @@ ThresholdRule absolute_threshold(double threshold, double c0, bool c0_from_confi
   r.threshold = threshold;
   std::ostringstream s;
   s << "crease when |p| > " << threshold << ", an absolute value given with --threshold";
+  if (c0 > 0) s << " (that is " << r.factor << " c0, " << c0_source(r) << ")";
+  r.note = s.str();
+  return r;
+}
+
+ThresholdRule threshold_from_crease_angle(double angle_deg, double c0, bool c0_from_config) {
+  if (!(angle_deg > 0 && angle_deg < 180))
+    throw std::invalid_argument("the crease angle must lie in (0, 180) degrees");
+  ThresholdRule r = absolute_threshold(2.0 * std::sin(angle_deg * std::numbers::pi / 360.0), c0,
+                                       c0_from_config);
+  std::ostringstream s;
+  s << "crease when |p| > " << r.threshold << " = 2 sin(" << angle_deg
+    << " deg / 2), output.crease_angle of the run's /config: a permanent fold of more than "
+    << angle_deg << " degrees, the same on every mesh";
   if (c0 > 0) s << " (that is " << r.factor << " c0, " << c0_source(r) << ")";
   r.note = s.str();
   return r;

@@ -55,8 +55,11 @@ ThresholdRule resolve_threshold(const RunData& run, const AnalyzeOptions& opt,
     warnings.push_back(w.str());
   }
   try {
-    return opt.threshold ? absolute_threshold(*opt.threshold, c0, c0_cfg.has_value())
-                         : threshold_from_c0(opt.threshold_c0, c0, c0_cfg.has_value());
+    if (opt.threshold) return absolute_threshold(*opt.threshold, c0, c0_cfg.has_value());
+    // The run's own crease angle is the default; an explicit --threshold-c0 overrides it.
+    if (const auto angle = crease_angle_from_config(run.config_yaml); angle && !opt.threshold_c0_given)
+      return threshold_from_crease_angle(*angle, c0, c0_cfg.has_value());
+    return threshold_from_c0(opt.threshold_c0, c0, c0_cfg.has_value());
   } catch (const std::invalid_argument& e) {
     throw InputError(run.path + ": " + e.what());
   }

@@ -17,4 +17,15 @@ std::optional<double> plastic_c0_from_config(const std::string& yaml_text) {
   return std::nullopt;
 }
 
+std::optional<double> crease_angle_from_config(const std::string& yaml_text) {
+  if (yaml_text.empty()) return std::nullopt;
+  try {
+    const YAML::Node a = YAML::Load(yaml_text)["output"]["crease_angle"];
+    if (a && a.IsScalar() && a.as<double>() > 0) return a.as<double>();
+  } catch (const YAML::Exception&) {
+    // Unreadable: no stated angle; the c0 look-up warns about the config.
+  }
+  return std::nullopt;
+}
+
 }  // namespace crumple::analysis

@@ -16,4 +16,8 @@ inline constexpr double kDefaultPlasticC0 = 0.1;
 /// caller then uses kDefaultPlasticC0, as the simulator did).
 std::optional<double> plastic_c0_from_config(const std::string& yaml_text);
 
+/// output.crease_angle in degrees when the config states one (> 0), else nullopt: the
+/// protocol's own crease definition, which the analysis takes as its default threshold.
+std::optional<double> crease_angle_from_config(const std::string& yaml_text);
+
 }  // namespace crumple::analysis

@@ -229,7 +229,7 @@ int run(const Options& o) {
   rec.meta.ks = mat.model.ks, rec.meta.kb = mat.model.kb, rec.meta.mass = mat.model.mass;
   rec.meta.h_eff = mat.h_eff;
   rec.meta.mass_scale = p.material.mass_scale;
-  rec.meta.crease_threshold = kCreaseThresholdFactor * p.integrator.plastic_c0;
+  rec.meta.crease_threshold = crease_threshold(p.integrator.plastic_c0, p.output.crease_angle);
   if (!o.quiet) print_setup(mesh, p, run);
 
   Integrator& integ = run.integrator();

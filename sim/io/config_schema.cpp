@@ -114,6 +114,13 @@ Section output_section() {
       real("checkpoint_wall_s", &S::checkpoint_wall_s).at_least(0).units("s").may_change_on_resume()
           .means("wall time between checkpoints inside a stage (also at every stage end)"),
       flag("xdmf", &S::xdmf).means("write the ParaView sidecar RUN.xdmf"),
+      real("crease_angle", &S::crease_angle).at_least(0).below(180).units("deg")
+          .unset_when_zero().shown_default("0: 0.5 c0")
+          .means("permanent fold angle above which a hinge counts as a crease (its plastic "
+                 "rest curvature above 2 sin(angle / 2)), the same on every mesh: the run file's "
+                 "crease masks and crumple-analyze's default threshold; 0: half the yield "
+                 "curvature c0, which moves with the mesh under a yield radius "
+                 "(docs/STATISTICS.md §5)"),
   };
   return s;
 }

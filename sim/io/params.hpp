@@ -62,6 +62,9 @@ struct OutputParams {
   double dt = 0.01;              ///< simulated time between frames (s)
   double checkpoint_wall_s = 300;
   bool xdmf = true;
+  /// Permanent fold angle (degrees) above which a hinge counts as a crease; 0: half the yield
+  /// curvature c0 (sim/model/crease_rule.hpp).
+  double crease_angle = 0;
 };
 
 struct Params {

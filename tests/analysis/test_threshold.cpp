@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <random>
 
 using namespace crumple::analysis;
@@ -123,4 +125,33 @@ TEST(ThresholdSensitivity, MonotoneAndConsistentWithTheMainResult) {
 // analysis's default threshold: the two programs share no code, so this holds them together.
 TEST(Threshold, RunFileMasksUseTheAnalysisDefault) {
   EXPECT_EQ(crumple::kCreaseThresholdFactor, crumple::analysis::kDefaultThresholdFactor);
+}
+
+// A run whose /config states output.crease_angle is analysed at that fold angle by default, on
+// every mesh alike; an explicit --threshold-c0 or --threshold still overrides it; the run file's
+// masks follow the same rule (crumple::crease_threshold).
+TEST(ThresholdRule, TheRunsCreaseAngleIsTheDefault) {
+  const std::string cfg = "integrator: {plastic_c0: 0.45}\noutput: {crease_angle: 18.3}\n";
+  EXPECT_EQ(crease_angle_from_config(cfg), 18.3);
+  EXPECT_FALSE(crease_angle_from_config("output: {crease_angle: 0}\n").has_value());
+  EXPECT_FALSE(crease_angle_from_config("output: {dt: 0.01}\n").has_value());
+  EXPECT_FALSE(crease_angle_from_config("{not yaml").has_value());
+
+  const double expected = 2 * std::sin(18.3 * std::numbers::pi / 360);
+  const RunAnalysis r = analyze_run(random_run(cfg), cheap());
+  EXPECT_EQ(r.threshold_rule.kind, ThresholdRule::Kind::Absolute);
+  EXPECT_NEAR(r.threshold_rule.threshold, expected, 1e-15);
+  EXPECT_NEAR(r.threshold_rule.factor, expected / 0.45, 1e-15);
+  EXPECT_NE(r.threshold_rule.note.find("output.crease_angle"), std::string::npos);
+  EXPECT_NEAR(crumple::crease_threshold(0.45, 18.3), expected, 1e-15);
+  EXPECT_DOUBLE_EQ(crumple::crease_threshold(0.45, 0.0), crumple::kCreaseThresholdFactor * 0.45);
+
+  AnalyzeOptions by_c0 = cheap();
+  by_c0.threshold_c0 = 0.5;
+  by_c0.threshold_c0_given = true;
+  EXPECT_DOUBLE_EQ(analyze_run(random_run(cfg), by_c0).threshold_rule.threshold, 0.225);
+  AnalyzeOptions absolute = cheap();
+  absolute.threshold = 0.1;
+  EXPECT_DOUBLE_EQ(analyze_run(random_run(cfg), absolute).threshold_rule.threshold, 0.1);
+  EXPECT_THROW(threshold_from_crease_angle(180.0, 0.3, true), std::invalid_argument);
 }

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <csignal>
 #include <cstring>
@@ -276,4 +277,15 @@ TEST(Cli, ProgressLinesNameTheRunAndTheShareDone) {
     expected += cell;
   }
   EXPECT_EQ(last.substr(last.rfind("):") + 2), expected) << last;
+}
+
+TEST(Cli, AStatedCreaseAngleSetsTheCreaseMasks) {
+  // output.crease_angle: the masks (and the summary line) count folds above that angle, not 0.5 c0.
+  const fs::path cfg = write("tiny.yaml", kTiny);
+  const fs::path out = kDir / "crease_angle.h5";
+  const Result r = sim(cfg.string() + " -o " + out.string() +
+                       " --force --threads 1 --quiet --set output.crease_angle=20");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const RunRecord rec = read_run_file(out.string());
+  EXPECT_NEAR(rec.meta.crease_threshold, 2 * std::sin(10 * std::numbers::pi / 180), 1e-12);
 }

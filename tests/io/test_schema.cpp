@@ -134,6 +134,7 @@ TEST(Schema, ResolvedYamlPrintsExactlyTheDeclaredKeys) {
   p.material.ks = 1, p.material.kb = 1, p.material.mass = 1;  // printed only when given
   p.material.yield_radius = 0.01;  // also printed only when given (with the yield angle:
   p.material.yield_angle = 20;     // together refused on input, but each is printed when set),
+  p.output.crease_angle = 18.3;    // (a stated crease angle too)
   p.c0_from_mesh = true;           // and then plastic_c0 only once the run's mesh set it
   const YAML::Node root = YAML::Load(resolved_yaml(p));
   std::set<std::string> printed, declared;
