@@ -76,7 +76,7 @@ namespace {
 using namespace crumple::analysis;
 
 /// The per-run analysis options (thresholds, raster, segmentation, resampling).
-void add_run_options(CLI::App& app, AnalyzeOptions& opt, double& absolute) {
+void add_run_options(CLI::App& app, AnalyzeOptions& opt, double& absolute, double& angle) {
   CLI::Option* by_c0 =
       app.add_option("--threshold-c0", opt.threshold_c0,
                      "crease when |p| > F c0, c0 the run's yield curvature (integrator.plastic_c0 "
@@ -85,11 +85,18 @@ void add_run_options(CLI::App& app, AnalyzeOptions& opt, double& absolute) {
                      "/config states output.crease_angle (then |p| > 2 sin(angle/2))")
           ->capture_default_str()
           ->check(CLI::PositiveNumber);
-  app.add_option("--threshold", absolute,
-                 "crease when |p| > P, an absolute threshold (p in curvature units "
-                 "2 sin(theta/2)) instead of --threshold-c0")
-      ->check(CLI::PositiveNumber)
-      ->excludes(by_c0);
+  CLI::Option* by_value =
+      app.add_option("--threshold", absolute,
+                     "crease when |p| > P, an absolute threshold (p in curvature units "
+                     "2 sin(theta/2)) instead of --threshold-c0")
+          ->check(CLI::PositiveNumber)
+          ->excludes(by_c0);
+  app.add_option("--crease-angle", angle,
+                 "crease when the permanent fold exceeds this many degrees, |p| > 2 sin(angle/2), "
+                 "as a protocol's output.crease_angle states it (for runs made without it)")
+      ->check(CLI::Range(0.0, 180.0))
+      ->excludes(by_c0)
+      ->excludes(by_value);
   auto* px_cm = app.add_option("--px-per-cm", opt.px_per_cm, "raster resolution of the crease map")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
@@ -238,8 +245,8 @@ int main(int argc, char** argv) {
               "without a single compaction ratio: nothing is written); 1 any other error.");
   app.add_option("-o,--output", out_dir,
                  "output folder (default: the run file's name with .h5 replaced by .analysis)");
-  double absolute = 0.0;
-  add_run_options(app, opt, absolute);
+  double absolute = 0.0, angle = 0.0;
+  add_run_options(app, opt, absolute, angle);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -256,5 +263,6 @@ int main(int argc, char** argv) {
   }
   if (app.count("--threshold")) opt.threshold = absolute;
   if (app.count("--threshold-c0")) opt.threshold_c0_given = true;
+  if (app.count("--crease-angle")) opt.crease_angle = angle;
   return analyze_main(run_path, out_dir, opt);
 }

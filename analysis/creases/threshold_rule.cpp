@@ -58,14 +58,15 @@ ThresholdRule absolute_threshold(double threshold, double c0, bool c0_from_confi
   return r;
 }
 
-ThresholdRule threshold_from_crease_angle(double angle_deg, double c0, bool c0_from_config) {
+ThresholdRule threshold_from_crease_angle(double angle_deg, double c0, bool c0_from_config,
+                                          const std::string& source) {
   if (!(angle_deg > 0 && angle_deg < 180))
     throw std::invalid_argument("the crease angle must lie in (0, 180) degrees");
   ThresholdRule r = absolute_threshold(2.0 * std::sin(angle_deg * std::numbers::pi / 360.0), c0,
                                        c0_from_config);
   std::ostringstream s;
   s << "crease when |p| > " << r.threshold << " = 2 sin(" << angle_deg
-    << " deg / 2), output.crease_angle of the run's /config: a permanent fold of more than "
+    << " deg / 2), " << source << ": a permanent fold of more than "
     << angle_deg << " degrees, the same on every mesh";
   if (c0 > 0) s << " (that is " << r.factor << " c0, " << c0_source(r) << ")";
   r.note = s.str();

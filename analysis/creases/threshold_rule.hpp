@@ -42,8 +42,10 @@ ThresholdRule threshold_from_c0(double factor, double c0, bool c0_from_config);
 /// sensitivity table.
 ThresholdRule absolute_threshold(double threshold, double c0, bool c0_from_config);
 
-/// The run's own crease definition, output.crease_angle of its /config (degrees, in (0, 180)):
-/// threshold = 2 sin(angle / 2), the same on every mesh; else std::invalid_argument.
-ThresholdRule threshold_from_crease_angle(double angle_deg, double c0, bool c0_from_config);
+/// A crease angle (degrees, in (0, 180)): threshold = 2 sin(angle / 2), the same on every mesh;
+/// else std::invalid_argument. `source` says where the angle was stated (the run's
+/// output.crease_angle, or --crease-angle) for the note.
+ThresholdRule threshold_from_crease_angle(double angle_deg, double c0, bool c0_from_config,
+                                          const std::string& source);
 
 }  // namespace crumple::analysis

@@ -29,6 +29,8 @@ struct AnalyzeOptions {
   /// Absolute crease threshold (--threshold); when absent the threshold is threshold_c0 x c0.
   std::optional<double> threshold;
   double threshold_c0 = kDefaultThresholdFactor;  ///< F in crease when |p| > F c0
+  /// Crease angle in degrees (--crease-angle): |p| > 2 sin(angle / 2), as output.crease_angle.
+  std::optional<double> crease_angle;
   /// --threshold-c0 was given: F c0 even where the run's /config states output.crease_angle.
   bool threshold_c0_given = false;
   double px_per_cm = 40.0;                        ///< raster resolution

@@ -153,5 +153,10 @@ TEST(ThresholdRule, TheRunsCreaseAngleIsTheDefault) {
   AnalyzeOptions absolute = cheap();
   absolute.threshold = 0.1;
   EXPECT_DOUBLE_EQ(analyze_run(random_run(cfg), absolute).threshold_rule.threshold, 0.1);
-  EXPECT_THROW(threshold_from_crease_angle(180.0, 0.3, true), std::invalid_argument);
+  AnalyzeOptions by_angle = cheap();
+  by_angle.crease_angle = 30.0;  // --crease-angle: the same rule for a run made without the key
+  const RunAnalysis a = analyze_run(random_run("integrator: {plastic_c0: 0.45}\n"), by_angle);
+  EXPECT_NEAR(a.threshold_rule.threshold, 2 * std::sin(15 * std::numbers::pi / 180), 1e-15);
+  EXPECT_NE(a.threshold_rule.note.find("--crease-angle"), std::string::npos);
+  EXPECT_THROW(threshold_from_crease_angle(180.0, 0.3, true, "test"), std::invalid_argument);
 }
