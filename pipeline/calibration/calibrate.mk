@@ -38,31 +38,36 @@ $(CAL_OUT)/FOLD_CALIBRATION.md: $(CAL_RUNS) pipeline/calibration/fold_calibratio
 	@mkdir -p $(CAL_OUT)
 	$(PYTHON) pipeline/calibration/fold_calibration.py -o $(CAL_OUT) $(CAL_RUNS)
 
-# make calibrate-yield: the one fitted material constant, the yield fold angle (issue 36;
-# docs/SCIENCE.md). Runs the yield_calibration sweep (pipeline/sweeps/yield_calibration.yaml:
-# one cycle at Δ̃ = 0.27 for a bracket of material.yield_angle, 3 seeds, 1500 nodes; resumable)
-# and finds the angle at which P after cycle 1 meets the experiments' law
-# (pipeline/calibration/yield_calibration.py): results/yield_calibration/CALIBRATION.md,
-# calibration.json, .csv and the figure. About 5 minutes on 2 cores.
+# make calibrate-yield: the one fitted material constant, the yield radius (issue 36;
+# docs/SCIENCE.md). Runs the yield_radius_calibration sweep (pipeline/sweeps/
+# yield_radius_calibration.yaml: one cycle at Δ̃ = 0.27 for a bracket of material.yield_radius,
+# 3 seeds, 3000 nodes, creases above the protocol's 18.3 degrees; resumable) and finds the radius
+# at which P after cycle 1 meets the experiments' law (pipeline/calibration/yield_calibration.py):
+# results/yield_radius_calibration/CALIBRATION.md, calibration.json, .csv and the figure. About
+# 15 minutes on 2 cores. CALIBRATE_SWEEP=yield_calibration redoes the former calibration of a
+# yield angle at 1500 nodes (docs/studies/yield_calibration/).
+CALIBRATE_SWEEP ?= yield_radius_calibration
 .PHONY: calibrate-yield
 calibrate-yield:
-	$(MAKE) --no-print-directory sweep SWEEP=yield_calibration
-	$(PYTHON) pipeline/calibration/yield_calibration.py --points runs/sweeps/yield_calibration/points.json \
-	  --groups $(RESULTS)/yield_calibration/groups --out $(RESULTS)/yield_calibration \
-	  -o $(RESULTS)/yield_calibration/calibration.$(FIG_FORMAT)
+	$(MAKE) --no-print-directory sweep SWEEP=$(CALIBRATE_SWEEP)
+	$(PYTHON) pipeline/calibration/yield_calibration.py --points runs/sweeps/$(CALIBRATE_SWEEP)/points.json \
+	  --groups $(RESULTS)/$(CALIBRATE_SWEEP)/groups --out $(RESULTS)/$(CALIBRATE_SWEEP) \
+	  -o $(RESULTS)/$(CALIBRATE_SWEEP)/calibration.$(FIG_FORMAT)
 
 # make predictions: the calibrated simulation beside the experiments (issue 36, item 4;
 # pipeline/calibration/predictions.py): P per cycle at Δ̃ = 0.27, n0, the compaction sweep's global
 # c1, c2 and collapse, and the facet-area shape per cycle, each against its goal, from the
-# compaction sweep at the protocol's calibrated yield angle (make sweep SWEEP=compaction, resumable;
-# PREDICT_GROUPS limits it to some compactions, e.g. the five a session affords, and the report says
-# which were fitted). The calibration is the kept one the protocol states
-# (docs/studies/yield_calibration/). Writes results/compaction/PREDICTIONS.md, predictions.json and
-# the figure beside the sweep's report, so that make keep-study SWEEP=compaction keeps them too.
+# compaction sweep at the protocol's calibrated yield radius (make sweep SWEEP=compaction, 3000
+# nodes, resumable; PREDICT_GROUPS limits it to some compactions and PREDICT_SEEDS to some seeds,
+# and the report says which were fitted). The calibration is the kept one the protocol states
+# (docs/studies/yield_radius_calibration/). Writes results/compaction/PREDICTIONS.md,
+# predictions.json and the figure beside the sweep's report, so that make keep-study
+# SWEEP=compaction keeps them too.
 PREDICT_GROUPS ?=
+PREDICT_SEEDS ?=
 .PHONY: predictions
 predictions:
-	$(MAKE) --no-print-directory sweep SWEEP=compaction SWEEP_GROUPS="$(PREDICT_GROUPS)"
+	$(MAKE) --no-print-directory sweep SWEEP=compaction SWEEP_GROUPS="$(PREDICT_GROUPS)" SWEEP_SEEDS="$(PREDICT_SEEDS)"
 	$(PYTHON) pipeline/calibration/predictions.py --sweep-results $(RESULTS)/compaction \
-	  --points runs/sweeps/compaction/points.json --calibration docs/studies/yield_calibration/calibration.json \
+	  --points runs/sweeps/compaction/points.json --calibration docs/studies/yield_radius_calibration/calibration.json \
 	  --out $(RESULTS)/compaction -o $(RESULTS)/compaction/predictions.$(FIG_FORMAT)

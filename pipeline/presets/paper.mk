@@ -1,11 +1,10 @@
 # Preset `paper`: the paper's resolution (Fig. 9) and five cycles; hours per seed (projected
-# from the convergence ladder: about 2.5 h of one core per 5-cycle run). Not shown converged:
-# P still grows about 30 % per doubling of the nodes at 6000 (docs/studies/convergence_yield_radius/), so
-# the 5 % rule of a paper preset is not met by any resolution measured (that ladder stated the
-# yield as a radius; the protocol now states it as an angle, docs/MODEL.md §7.6).
-# At the calibrated yield angle (fitted at 1500 nodes) P after cycle 1 halves with each doubling
-# of the nodes up to 6000 (docs/studies/convergence/): the 5 % rule is not met and this preset's
-# results are not comparable with the calibrated quick preset.
+# from the convergence ladder: about 2.5 h of one core per 5-cycle run). Not yet shown to meet
+# the 5 % rule: with the protocol's material (a yield radius, creases above 18.3 degrees) P at
+# 3000 and 6000 nodes agreed within the seeds' errors (1-9 %, docs/studies/convergence_radius/),
+# but three seeds do not resolve 5 % and the 12000-node rung has not been run (make convergence
+# resumes it). Under the earlier statements of the yield no resolution converged
+# (docs/studies/convergence_yield_radius/, convergence_yield_angle/).
 PRESET_SEEDS := 1 2 3
 PRESET_THREADS := 1
 PRESET_SETS := --set mesh.nodes=12000 --set protocol.cycles=5

@@ -54,10 +54,11 @@ Section material_section() {
           .means("isotropic drag b_iso = ratio sqrt(ks m) (eq. 8)"),
       real("internal_damping_ratio", &S::internal_damping_ratio).at_least(0)
           .means("dashpots b_int = ratio sqrt(ks m) (eq. 9)"),
-      real("yield_radius", &S::yield_radius).above(0).units("m")
-          .unset_when_zero().shown_default("unset: integrator.plastic_c0")
+      real("yield_radius", &S::yield_radius).at_least(0).units("m")
+          .unset_when_zero().shown_default("0: unset")
           .means("yield radius of curvature: sets integrator.plastic_c0 on each mesh to "
-                 "2 sin(w / (2 R_y)), w the mean hinge width (docs/MODEL.md §7.5)"),
+                 "2 sin(w / (2 R_y)), w the mean hinge width (docs/MODEL.md §7.5); 0 unsets a "
+                 "protocol's radius, so that a yield angle or c0 can be given instead"),
       real("yield_angle", &S::yield_angle).at_least(0).below(180).units("deg")
           .unset_when_zero().shown_default("0: unset")
           .means("yield fold angle: a fold sharper than it yields; sets integrator.plastic_c0 "

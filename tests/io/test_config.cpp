@@ -244,8 +244,13 @@ TEST(Config, YieldRadiusAndPlasticC0AreNotBothGiven) {
   EXPECT_NE(e.find("material.yield_radius (c.yaml:1:26), which sets it"), std::string::npos) << e;
   const std::string by_set = error_of("integrator: {plastic_c0: 0.3}\n", {"material.yield_radius=0.005"});
   EXPECT_NE(by_set.find("--set material.yield_radius=0.005"), std::string::npos) << by_set;
-  EXPECT_NE(error_of("material: {yield_radius: 0}\n").find("material.yield_radius: must be > 0"),
+  EXPECT_NE(error_of("material: {yield_radius: -0.001}\n").find("material.yield_radius: must be >= 0"),
             std::string::npos);
+  // 0 unsets a protocol's radius: c0 is then given directly again.
+  EXPECT_EQ(load_config_text("material: {yield_radius: 0.005}\nprotocol:\n  stages:\n"
+                             "    - {type: roll, duration: 0.1}\n", "c.yaml", {"material.yield_radius=0",
+                                                                              "integrator.plastic_c0=0.3"})
+                .integrator.plastic_c0, 0.3);
   // Alone, it loads; the configuration printed before a mesh is known leaves c0 out and reads
   // back the same.
   const Params p = load_config_text(
