@@ -186,8 +186,10 @@ def main():
     own = [pt for pt in (load_json(a.points, "points file")["points"] if a.points else [])
            if pt["group"] == f"compaction-{a.compaction:g}"]
     analyze = own[0].get("analyze_args", []) if own else []
-    nodes = sorted({arg.split("=", 1)[1] for pt in own for arg in pt["args"]
-                    if arg.startswith("mesh.nodes=")})
+    # Each point's node count is its last --set mesh.nodes (the sweep's own settings come after
+    # the preset's, and the last one given wins, as in crumple-sim).
+    nodes = sorted({[arg.split("=", 1)[1] for arg in pt["args"] if arg.startswith("mesh.nodes=")][-1]
+                    for pt in own if any(arg.startswith("mesh.nodes=") for arg in pt["args"])})
     law = experiment(a.compaction, [c["cycle"] for c in ens["cycles"]])
     P = crease_rows(ens, law)
     facets = facet_rows(ens)

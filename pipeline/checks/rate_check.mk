@@ -1,6 +1,6 @@
 # make rate-check: is the plastic flow rate-independent at the protocol's loading rates?
 #
-# Runs the quick preset's sheet (1500 nodes) through RATE_CYCLES cycles of the protocol at
+# Runs a 1500-node sheet (RATE_NODES) through RATE_CYCLES cycles of the protocol at
 # integrator.plastic_rate = RATE_VALUES (by default half, once and twice the default 1e4 /s) for
 # every seed, analyses each run, and compares, per cycle, the change of the ensemble-mean crease
 # length (l and P at the analysis's default threshold) between rates with the seed-to-seed spread

@@ -165,9 +165,16 @@ class Predictions(unittest.TestCase):
                 "c1": c1, "sigma_c1": 1.0, "c2": c2, "sigma_c2": 0.01, "chi2": 50.0, "dof": 28,
                 "at_bound": False}}}}, f)
         with open(os.path.join(tmp, "cal.json"), "w") as f:
-            json.dump({"calibrated": {"angle_deg": 37.1, "sigma_deg": 1.0, "c0": 0.636}}, f)
+            json.dump({"calibrated": {"key": "material.yield_radius", "value": 3.58, "unit": "mm",
+                                      "sigma": 0.05, "key_value": 3.58e-3, "c0": None}}, f)
+        # The sweep's points: the preset's node count, then the sweep's own, which wins.
+        with open(os.path.join(tmp, "points.json"), "w") as f:
+            json.dump({"points": [{"group": "compaction-0.27", "analyze_args": ["--px-per-edge", "24"],
+                                   "args": ["p.yaml", "--set", "mesh.nodes=1500", "--set",
+                                            "mesh.nodes=3000"]}]}, f)
         r = subprocess.run([sys.executable, PREDICT, "--sweep-results", tmp, "--calibration",
-                            os.path.join(tmp, "cal.json"), "--out", os.path.join(tmp, "out"),
+                            os.path.join(tmp, "cal.json"), "--points", os.path.join(tmp, "points.json"),
+                            "--out", os.path.join(tmp, "out"),
                             "-o", os.path.join(tmp, "out", "p.svg")], capture_output=True, text=True)
         self.assertEqual(r.returncode, 0, r.stderr)
         with open(os.path.join(tmp, "out", "predictions.json")) as f:
@@ -190,6 +197,8 @@ class Predictions(unittest.TestCase):
         self.assertAlmostEqual(doc["P"][4]["ratio"], 1.1, places=9)
         self.assertEqual(sum(r["ks_not_rejecting"] for r in doc["facets"]), 5)
         self.assertIn("| 5 | predicted |", md)
+        self.assertIn("The yield radius 3.58 ± 0.05 mm was fitted", md)
+        self.assertEqual(doc["resolution"], "3000 nodes, analysed at --px-per-edge 24")
         r = subprocess.run([sys.executable, PREDICT, "--replot", doc["_path"], "-o",
                             doc["_path"] + ".svg"], capture_output=True, text=True)
         self.assertEqual(r.returncode, 0, r.stderr)
