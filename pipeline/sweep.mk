@@ -61,8 +61,8 @@ $(SWEEP_RESULTS)/REPORT.md: $(SWEEP_ENSEMBLES) $(SWEEP_DIR)/points.json $(ANALYZ
 	$(PYTHON) pipeline/report/make_sweep_report.py --points $(SWEEP_DIR)/points.json \
 	  --results $(SWEEP_RESULTS) -o $@
 
-# make convergence: the resolution ladder of issue 36 (pipeline/sweeps/convergence.yaml), 1500 to
-# 24000 nodes; SWEEP_GROUPS="nodes-1500 nodes-3000 nodes-6000" runs the rungs a small machine
+# make convergence: the resolution ladder of issue 36 (pipeline/sweeps/convergence.yaml), 3000 to
+# 24000 nodes; SWEEP_GROUPS="nodes-3000 nodes-6000" runs the rungs a small machine
 # affords first, and the report says which are left.
 convergence:
 	$(MAKE) --no-print-directory sweep SWEEP=convergence

@@ -17,6 +17,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdlib>
+
 #include <filesystem>
 #include <iostream>
 
@@ -94,7 +96,12 @@ void add_run_options(CLI::App& app, AnalyzeOptions& opt, double& absolute, doubl
   app.add_option("--crease-angle", angle,
                  "crease when the permanent fold exceeds this many degrees, |p| > 2 sin(angle/2), "
                  "as a protocol's output.crease_angle states it (for runs made without it)")
-      ->check(CLI::Range(0.0, 180.0))
+      ->check(CLI::Number)
+      ->check([](const std::string& s) {
+        // CLI::Number has vetted s; a fold of 0 or 180 degrees is no crease angle.
+        const double a = std::strtod(s.c_str(), nullptr);
+        return a > 0 && a < 180 ? std::string() : "must lie strictly between 0 and 180 degrees";
+      })
       ->excludes(by_c0)
       ->excludes(by_value);
   auto* px_cm = app.add_option("--px-per-cm", opt.px_per_cm, "raster resolution of the crease map")

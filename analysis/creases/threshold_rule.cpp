@@ -64,6 +64,9 @@ ThresholdRule threshold_from_crease_angle(double angle_deg, double c0, bool c0_f
     throw std::invalid_argument("the crease angle must lie in (0, 180) degrees");
   ThresholdRule r = absolute_threshold(2.0 * std::sin(angle_deg * std::numbers::pi / 360.0), c0,
                                        c0_from_config);
+  r.kind = ThresholdRule::Kind::CreaseAngle;
+  r.angle_deg = angle_deg;
+  r.angle_from_config = source.find("output.crease_angle") != std::string::npos;
   std::ostringstream s;
   s << "crease when |p| > " << r.threshold << " = 2 sin(" << angle_deg
     << " deg / 2), " << source << ": a permanent fold of more than "

@@ -25,8 +25,10 @@ inline constexpr double kDefaultThresholdFactor = 0.5;
 inline constexpr std::array<double, 6> kSensitivityFactors = {0.25, 0.5, 0.75, 1.0, 1.5, 2.0};
 
 struct ThresholdRule {
-  enum class Kind { FractionOfC0, Absolute };
+  enum class Kind { FractionOfC0, Absolute, CreaseAngle };
   Kind kind = Kind::FractionOfC0;
+  double angle_deg = 0.0;                   ///< the crease angle (CreaseAngle only)
+  bool angle_from_config = false;           ///< the run's output.crease_angle, not --crease-angle
   double factor = kDefaultThresholdFactor;  ///< F (FractionOfC0 only)
   double c0 = 0.0;                          ///< the run's yield curvature
   bool c0_from_config = false;              ///< false: the simulator's default was assumed

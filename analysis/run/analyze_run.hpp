@@ -36,7 +36,7 @@ struct AnalyzeOptions {
   double px_per_cm = 40.0;                        ///< raster resolution
   /// When > 0 (--px-per-edge), the raster follows the mesh instead: px_per_cm is set so that
   /// the mean mesh edge spans this many pixels, so that a ladder in node count measures every
-  /// rung at the same resolution relative to its triangles (docs/studies/convergence/).
+  /// rung at the same resolution relative to its triangles (docs/studies/convergence_radius/).
   double px_per_edge = 0.0;
   SegmentParams segment;                          ///< closing size, minimum facet pixels
   int crease_px = 1;                              ///< crease line width in pixels

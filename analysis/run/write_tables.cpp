@@ -34,6 +34,10 @@ nlohmann::json sensitivity_json(const ThresholdSensitivity& s) {
 
 nlohmann::json threshold_rule_json(const ThresholdRule& r) {
   if (r.kind == ThresholdRule::Kind::Absolute) return {{"kind", "absolute"}};
+  if (r.kind == ThresholdRule::Kind::CreaseAngle)
+    return {{"kind", "crease_angle"},
+            {"angle_deg", r.angle_deg},
+            {"angle_source", r.angle_from_config ? "config" : "option"}};
   return {{"kind", "fraction_of_c0"},
           {"factor", r.factor},
           {"c0", r.c0},

@@ -78,9 +78,13 @@ def interpolate(rows, target, kind):
     with its standard error from the two ends' s.e.m.; None and a reason when not bracketed."""
     lt = math.log(target)
     u = kind["unit"]
-    for a, b in zip(rows, rows[1:]):
-        if not min(a["P_mean"], b["P_mean"]) <= target <= max(a["P_mean"], b["P_mean"]):
-            continue
+    brackets = [(a, b) for a, b in zip(rows, rows[1:])
+                if min(a["P_mean"], b["P_mean"]) <= target <= max(a["P_mean"], b["P_mean"])]
+    if len(brackets) > 1:
+        where = ", ".join(f"{a['value']:g}-{b['value']:g} {u}" for a, b in brackets)
+        return None, (f"P crosses the target more than once ({where}): it is not monotonic in the "
+                      f"{kind['name']}, so no single value is calibrated; refine or extend the grid")
+    for a, b in brackets:
         la, lb = math.log(a["P_mean"]), math.log(b["P_mean"])
         if la == lb:
             return None, f"P is flat between {a['value']:g} and {b['value']:g} {u}"
@@ -102,7 +106,7 @@ def interpolate(rows, target, kind):
         end, way = (rows[-1], "larger") if rising else (rows[0], "smaller")
         return None, (f"P after cycle 1 is below the target {target:.2f} L0 at every {kind['name']} "
                       f"to {end['value']:g} {u}: add {way} values to the grid")
-    return None, f"P is not monotonic in the {kind['name']} where it crosses the target"
+    return None, "no value brackets the target"  # not reached: above or below everywhere
 
 
 def line_fit(rows, target):

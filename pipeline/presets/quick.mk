@@ -2,9 +2,11 @@
 # is the coarsest resolution at which P per cycle of the protocol's material (a yield radius,
 # creases above 18.3 degrees) matched the 6000-node rung within the seeds' errors: 1-9 % apart
 # in cycles 1-3, where 1500 nodes came out 27-36 % low (docs/studies/convergence_radius/,
-# R_y = 3.78 mm, 3 seeds). The 15 % rule of a quick preset is met to the precision three seeds
-# give; no finer rung was run to confirm it. Run time: about 30 minutes on 2 cores once built
-# (projected from the 3000-node runs of the compaction sweep, two at a time on one thread each).
+# R_y = 3.78 mm, 3 seeds). Against that study's Richardson estimate (order assumed, marked noise)
+# 3000 nodes is 3-16 % off, 15.8 % in cycle 2, so by the letter of the 15 % rule it names 6000;
+# the seeds do not resolve the difference, and 6000 nodes costs three times as much. Run time:
+# about 15 minutes on 2 cores once built (projected: 5 cycles are half the 927-1067 s of
+# integration wall a 10-cycle run at 3000 nodes took in the compaction sweep, two at a time).
 # The calibration of the yield radius was made at this resolution (docs/SCIENCE.md).
 PRESET_SEEDS := 1 2 3 4
 PRESET_THREADS := 1

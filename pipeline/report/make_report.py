@@ -97,6 +97,11 @@ def rule_text(p):
         return (f"|p| > {fmt(rule.get('factor'))} c0 = {fmt(rule.get('factor'))} × "
                 f"{fmt(rule.get('c0'))} = {fmt(t)}: a fixed fraction of the run's yield curvature "
                 "c0 (`integrator.plastic_c0`)")
+    if isinstance(rule, dict) and rule.get("kind") == "crease_angle":
+        where = ("the protocol's `output.crease_angle`" if rule.get("angle_source") == "config"
+                 else "`--crease-angle`")
+        return (f"|p| > {fmt(t)} = 2 sin({fmt(rule.get('angle_deg'))}°/2): a permanent fold of more "
+                f"than {fmt(rule.get('angle_deg'))} degrees, the same on every mesh ({where})")
     if isinstance(rule, dict) and rule.get("kind") == "absolute":
         return f"|p| > {fmt(t)}, an absolute value given on the command line (`--threshold`)"
     return (f"|p| > {fmt(t)}; the rule it was derived by is not recorded in these stats.json "

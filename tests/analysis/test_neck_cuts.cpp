@@ -31,7 +31,7 @@ cv::Mat two_domes(float a, float b) {
   return f;
 }
 
-/// Two 60 x 60 squares joined by a corridor `neck` pixels wide and 20 long, inside a frame.
+/// Two 60 x 60 squares joined by a corridor `neck` pixels wide and 30 long, inside a frame.
 cv::Mat dumbbell(int neck) {
   cv::Mat free = cv::Mat::zeros(100, 170, CV_8U);
   cv::rectangle(free, cv::Rect(10, 20, 60, 60), 255, cv::FILLED);

@@ -139,7 +139,9 @@ TEST(ThresholdRule, TheRunsCreaseAngleIsTheDefault) {
 
   const double expected = 2 * std::sin(18.3 * std::numbers::pi / 360);
   const RunAnalysis r = analyze_run(random_run(cfg), cheap());
-  EXPECT_EQ(r.threshold_rule.kind, ThresholdRule::Kind::Absolute);
+  EXPECT_EQ(r.threshold_rule.kind, ThresholdRule::Kind::CreaseAngle);
+  EXPECT_TRUE(r.threshold_rule.angle_from_config);
+  EXPECT_DOUBLE_EQ(r.threshold_rule.angle_deg, 18.3);
   EXPECT_NEAR(r.threshold_rule.threshold, expected, 1e-15);
   EXPECT_NEAR(r.threshold_rule.factor, expected / 0.45, 1e-15);
   EXPECT_NE(r.threshold_rule.note.find("output.crease_angle"), std::string::npos);
@@ -158,5 +160,6 @@ TEST(ThresholdRule, TheRunsCreaseAngleIsTheDefault) {
   const RunAnalysis a = analyze_run(random_run("integrator: {plastic_c0: 0.45}\n"), by_angle);
   EXPECT_NEAR(a.threshold_rule.threshold, 2 * std::sin(15 * std::numbers::pi / 180), 1e-15);
   EXPECT_NE(a.threshold_rule.note.find("--crease-angle"), std::string::npos);
+  EXPECT_FALSE(a.threshold_rule.angle_from_config);
   EXPECT_THROW(threshold_from_crease_angle(180.0, 0.3, true, "test"), std::invalid_argument);
 }

@@ -52,6 +52,11 @@ out = sys.argv[1]
 e = json.load(open(os.path.join(out, "ensemble.json")))
 text = open(os.path.join(out, "REPORT.md")).read()
 assert e["compaction"] == 0.36, e["compaction"]
+# A run whose protocol states its crease angle is reported with that rule (not "--threshold").
+from make_report import rule_text
+said = rule_text({"threshold": 0.318, "threshold_rule": {"kind": "crease_angle", "angle_deg": 18.3,
+                                                         "angle_source": "config"}})
+assert "a permanent fold of more than 18.3 degrees" in said and "output.crease_angle" in said, said
 for q, name in (("perimeter_P", "P"), ("crease_length_L0", "ℓ/L0")):
     for kind in ("increments", "cumulative"):
         f = e["fits"][q][kind]

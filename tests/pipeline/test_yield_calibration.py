@@ -116,6 +116,13 @@ class YieldCalibration(unittest.TestCase):
         self.assertEqual(code, 3)
         self.assertIn("to 3 mm: add larger values", err)
 
+    def test_a_non_monotonic_bracket_is_refused(self):
+        code, err, doc, _ = self.run_case({28.0: ensemble(20, 1), 32.0: ensemble(8, 1),
+                                           36.0: ensemble(16, 1), 40.0: ensemble(5, 1)})
+        self.assertEqual(code, 3)
+        self.assertIn("crosses the target more than once", err)
+        self.assertIsNone(doc["interpolation"])
+
     def test_mixed_compactions_are_refused(self):
         code, err, _, _ = self.run_case({30.0: ensemble(20, 2), 34.0: ensemble(8, 1, compaction=0.18)})
         self.assertEqual(code, 2)
