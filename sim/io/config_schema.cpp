@@ -159,7 +159,7 @@ const std::vector<std::pair<std::string, std::string>>& retired_keys() {
   static const std::vector<std::pair<std::string, std::string>> keys = {
       {"output.crease_threshold",
        "retired: the run file stores the plastic field p and crumple-analyze applies the crease "
-       "threshold (--threshold, default 0.5 c0)"},
+       "threshold; a protocol states it as output.crease_angle (degrees), else 0.5 c0"},
   };
   return keys;
 }

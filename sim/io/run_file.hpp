@@ -21,7 +21,8 @@ struct RunMeta {
   /// material.mass_scale: the node masses' factor, which slows the simulated clock's inertia
   /// (docs/MODEL.md §8); NaN in files written before it was stored.
   double mass_scale = std::numeric_limits<double>::quiet_NaN();
-  /// |p| above which the `crease` masks mark a hinge (kCreaseThresholdFactor c0); NaN in files
+  /// |p| above which the `crease` masks mark a hinge (crease_threshold in sim/model/crease_rule.hpp:
+  /// the config's output.crease_angle, else kCreaseThresholdFactor c0); NaN in files
   /// written before the masks were stored.
   double crease_threshold = std::numeric_limits<double>::quiet_NaN();
 };
