@@ -59,17 +59,19 @@ ThresholdRule absolute_threshold(double threshold, double c0, bool c0_from_confi
 }
 
 ThresholdRule threshold_from_crease_angle(double angle_deg, double c0, bool c0_from_config,
-                                          const std::string& source) {
+                                          bool angle_from_config) {
   if (!(angle_deg > 0 && angle_deg < 180))
     throw std::invalid_argument("the crease angle must lie in (0, 180) degrees");
   ThresholdRule r = absolute_threshold(2.0 * std::sin(angle_deg * std::numbers::pi / 360.0), c0,
                                        c0_from_config);
   r.kind = ThresholdRule::Kind::CreaseAngle;
   r.angle_deg = angle_deg;
-  r.angle_from_config = source.find("output.crease_angle") != std::string::npos;
+  r.angle_from_config = angle_from_config;
   std::ostringstream s;
   s << "crease when |p| > " << r.threshold << " = 2 sin(" << angle_deg
-    << " deg / 2), " << source << ": a permanent fold of more than "
+    << " deg / 2), "
+    << (angle_from_config ? "output.crease_angle of the run's /config" : "given with --crease-angle")
+    << ": a permanent fold of more than "
     << angle_deg << " degrees, the same on every mesh";
   if (c0 > 0) s << " (that is " << r.factor << " c0, " << c0_source(r) << ")";
   r.note = s.str();

@@ -45,9 +45,9 @@ ThresholdRule threshold_from_c0(double factor, double c0, bool c0_from_config);
 ThresholdRule absolute_threshold(double threshold, double c0, bool c0_from_config);
 
 /// A crease angle (degrees, in (0, 180)): threshold = 2 sin(angle / 2), the same on every mesh;
-/// else std::invalid_argument. `source` says where the angle was stated (the run's
-/// output.crease_angle, or --crease-angle) for the note.
+/// else std::invalid_argument. angle_from_config: the run's output.crease_angle stated it (else
+/// --crease-angle did).
 ThresholdRule threshold_from_crease_angle(double angle_deg, double c0, bool c0_from_config,
-                                          const std::string& source);
+                                          bool angle_from_config);
 
 }  // namespace crumple::analysis

@@ -57,12 +57,10 @@ ThresholdRule resolve_threshold(const RunData& run, const AnalyzeOptions& opt,
   try {
     if (opt.threshold) return absolute_threshold(*opt.threshold, c0, c0_cfg.has_value());
     if (opt.crease_angle)
-      return threshold_from_crease_angle(*opt.crease_angle, c0, c0_cfg.has_value(),
-                                         "given with --crease-angle");
+      return threshold_from_crease_angle(*opt.crease_angle, c0, c0_cfg.has_value(), false);
     // The run's own crease angle is the default; an explicit --threshold-c0 overrides it.
     if (const auto angle = crease_angle_from_config(run.config_yaml); angle && !opt.threshold_c0_given)
-      return threshold_from_crease_angle(*angle, c0, c0_cfg.has_value(),
-                                         "output.crease_angle of the run's /config");
+      return threshold_from_crease_angle(*angle, c0, c0_cfg.has_value(), true);
     return threshold_from_c0(opt.threshold_c0, c0, c0_cfg.has_value());
   } catch (const std::invalid_argument& e) {
     throw InputError(run.path + ": " + e.what());

@@ -188,8 +188,9 @@ def main():
     analyze = own[0].get("analyze_args", []) if own else []
     # Each point's node count is its last --set mesh.nodes (the sweep's own settings come after
     # the preset's, and the last one given wins, as in crumple-sim).
-    nodes = sorted({[arg.split("=", 1)[1] for arg in pt["args"] if arg.startswith("mesh.nodes=")][-1]
-                    for pt in own if any(arg.startswith("mesh.nodes=") for arg in pt["args"])})
+    per_point = [[arg.split("=", 1)[1] for arg in pt["args"] if arg.startswith("mesh.nodes=")]
+                 for pt in own]
+    nodes = sorted({given[-1] for given in per_point if given})
     law = experiment(a.compaction, [c["cycle"] for c in ens["cycles"]])
     P = crease_rows(ens, law)
     facets = facet_rows(ens)
