@@ -144,9 +144,11 @@ void print_setup(const Mesh& mesh, const Params& p, const Simulation& run) {
                  p.integrator.plastic_c0, p.material.yield_radius, mean_hinge_width(mesh));
   if (!run.contact()) return;
   if (run.contact_range_raised())
-    std::fprintf(stderr, "  contact: mesh too coarse to resolve h_eff; range raised to half an edge\n");
-  std::fprintf(stderr, "  contact: sigma %.4g m, %d sites\n", run.contact_settings().sigma,
-               static_cast<int>(run.contact()->pairs->sites().size()));
+    std::fprintf(stderr, "  contact: mesh too coarse to resolve h_eff; range raised to %.3g edge\n",
+                 p.contact.sigma_floor);
+  std::fprintf(stderr, "  contact: sigma %.4g m, %d sites (level %d)\n", run.contact_settings().sigma,
+               static_cast<int>(run.contact()->pairs->sites().size()),
+               run.contact()->pairs->sites().level);
 }
 
 /// The run in one line, its last on the console (issue 37): its name, cycles, simulated time,

@@ -26,10 +26,11 @@ ContactSettings contact_settings(const ContactParams& c, const Mesh& mesh,
                                  const ResolvedMaterial& material, bool* raised) {
   ContactSettings cs;
   cs.ks = c.stiffness > 0 ? c.stiffness : material.model.ks;
-  const double floor = 0.5 * mesh.mean_edge_length();
+  const double floor = c.sigma_floor * mesh.mean_edge_length();
   cs.sigma = c.sigma > 0 ? c.sigma : std::max(material.h_eff, floor);
   if (raised) *raised = c.sigma <= 0 && floor > material.h_eff;
   cs.level = c.refinement == "auto" ? -1 : std::stoi(c.refinement);
+  cs.max_level = c.max_refinement;
   cs.skin = c.skin;
   return cs;
 }

@@ -16,10 +16,13 @@ namespace crumple {
 SheetInfo sheet_info(const Mesh& mesh, const ResolvedMaterial& material, double size);
 
 /// The self-contact settings of a run (paper §2.4): stiffness ks and range sigma = h_eff unless
-/// the config sets them, and on a mesh too coarse to resolve h_eff the range raised to half an
-/// edge (with site refinement capped at level 3 the sites are a quarter edge apart, and layers
-/// slip between sites unless the range covers them; measured: a flat sheet stays force-free up
-/// to 0.79 edge at level 3). `raised` (optional) tells whether that floor applied.
+/// the config sets them, and on a mesh too coarse to resolve h_eff the range raised to
+/// contact.sigma_floor edges, half an edge by default (with the default cap on site refinement,
+/// level 3, the sites are a quarter edge apart, and layers slip between sites unless the range
+/// covers them; measured: a flat sheet stays force-free up to 0.79 edge at level 3). With
+/// sigma_floor = 0 the range stays h_eff and the sites are refined to it instead, up to
+/// contact.max_refinement (docs/MODEL.md §6.6). `raised` (optional) tells whether the floor
+/// applied.
 ContactSettings contact_settings(const ContactParams& c, const Mesh& mesh,
                                  const ResolvedMaterial& material, bool* raised = nullptr);
 

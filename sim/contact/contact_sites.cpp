@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 #include <stdexcept>
+#include <string>
 
 namespace crumple {
 
@@ -54,8 +55,9 @@ Index num_contact_sites(const Mesh& mesh, int level) {
 }
 
 ContactSites build_contact_sites(const Mesh& mesh, int level) {
-  if (level < 0 || level > 3)
-    throw std::invalid_argument("build_contact_sites: refinement level must be 0..3");
+  if (level < 0 || level > kMaxContactRefinement)
+    throw std::invalid_argument("build_contact_sites: refinement level must be 0.." +
+                                std::to_string(kMaxContactRefinement));
   const Index n = mesh.num_nodes();
   // Triangle fan of every node (CSR), for the node sites' exclusion sets.
   std::vector<int> fan_start(n + 1, 0);
@@ -143,17 +145,18 @@ ContactSites build_contact_sites(const Mesh& mesh, int level) {
   return cs;
 }
 
-int auto_refinement(const Mesh& mesh, double sigma, bool* capped) {
+int auto_refinement(const Mesh& mesh, double sigma, bool* capped, int max_level) {
   if (!(sigma > 0.0)) throw std::invalid_argument("auto_refinement: sigma must be positive");
+  max_level = std::clamp(max_level, 0, kMaxContactRefinement);
   const double l = mesh.mean_edge_length();
   // Smallest L with l/(L+1) <= sigma; a tiny tolerance so that l = sigma exactly gives L = 0.
   const int need = std::max(0, static_cast<int>(std::ceil(l / sigma * (1.0 - 1e-12) - 1.0)));
-  const bool cap = need > 3;
+  const bool cap = need > max_level;
   if (capped)
     *capped = cap;
   else if (cap)
-    std::cerr << "warning: contact refinement capped at level 3: site spacing " << l / 4
-              << " exceeds the interaction range " << sigma << "\n";
+    std::cerr << "warning: contact refinement capped at level " << max_level << ": site spacing "
+              << l / (max_level + 1) << " exceeds the interaction range " << sigma << "\n";
   // Floors on coarse meshes. Node and edge sites carry the nodes of all their triangles, so
   // between two triangles one edge apart (no shared node) every node and edge site pair is
   // excluded, and only interior sites keep such triangles from passing through each other at
@@ -162,9 +165,9 @@ int auto_refinement(const Mesh& mesh, double sigma, bool* capped) {
   // alone leaves the corners uncovered and the floor is 3. Measured, radial confinement of a
   // 250-node disk (sigma = 0.5 l): 25 crossings at level 1, 2 at level 2, none at level 3.
   // A flat sheet stays force-free at these levels (sigma < 0.97 l at level 2).
-  if (need < 3 && sigma < 0.577 * l) return 3;
-  if (need < 2 && sigma < 0.9 * l) return 2;
-  return std::min(need, 3);
+  if (need < 3 && sigma < 0.577 * l) return std::min(3, max_level);
+  if (need < 2 && sigma < 0.9 * l) return std::min(2, max_level);
+  return std::min(need, max_level);
 }
 
 }  // namespace crumple

@@ -1,12 +1,13 @@
 // Contact sites: the nodes plus refined points on edges and triangle interiors (paper §2.4,
 // Fig. 2), and the rule that keeps neighbouring sites from interacting.
 //
-// Refinement level L (0..3): on every triangle the sites are the points of the barycentric
+// Refinement level L (0..kMaxContactRefinement): on every triangle the sites are the points of the barycentric
 // lattice with spacing 1/(L+1), i.e. weights (i, j, k)/(L+1) with i + j + k = L + 1. Level 0 is
 // the nodes only; level 1 adds the edge midpoints; level 2 adds two points per edge and one
-// interior point; level 3 three per edge and three interior points. Sites along an edge are
+// interior point; level 3 three per edge and three interior points; level L has L per edge and
+// L(L-1)/2 inside. Sites along an edge are
 // spaced by |e|/(L+1), so with mean edge length l the spacing is l/(L+1); auto_refinement picks
-// the smallest L with l/(L+1) <= sigma, so a point of the sheet is never farther than about
+// the smallest L with l/(L+1) <= sigma (up to a cap, 3 unless the config raises it), so a point of the sheet is never farther than about
 // 0.6 sigma from a site and a sheet approaching another meets the repulsion before passing; and
 // at least L = 2 while sigma < 0.9 l, because only interior sites (L >= 2) can keep apart two
 // triangles one edge apart (their node and edge sites exclude each other, see below).
@@ -20,12 +21,22 @@
 // disjoint. On a flat sheet (jittered grid, mean edge l) the closest interacting sites are then
 // 2.13 l apart at level 0, 1.27 l at level 1, 0.97 l at level 2 and 0.79 l at level 3, while
 // auto_refinement uses level 2 or 3 only for sigma < 0.9 l and level 0 or 1 above (force-free
-// up to sigma of about 2 l at level 0): a flat or gently curved sheet feels no contact force. Forcing a high level with a large sigma (level 3 with sigma = l) would.
+// up to sigma of about 2 l at level 0): a flat or gently curved sheet feels no contact force.
+// Forcing a high level with a large sigma (level 3 with sigma = l) would.
+// Finer than the mesh (sigma well below l, the thickness of a sheet meshed coarser than it is
+// thick): the spacing rule gives L + 1 >= l/sigma, but the interior site of a triangle nearest
+// a corner sits sqrt(3) l/(L+1) from it on an equilateral triangle, so within about 1.7 sigma of
+// a corner two triangles one edge apart have no interacting sites. How much that matters in a
+// crumpled sheet is measured, not assumed (docs/MODEL.md §6.6).
 #pragma once
 
 #include "sim/mesh/mesh.hpp"
 
 namespace crumple {
+
+/// The finest site refinement built: level 15 is 16 sites per edge, about 70 times the sites of
+/// level 0; beyond it a finer mesh is the cheaper way to a short range.
+inline constexpr int kMaxContactRefinement = 15;
 
 struct ContactSite {
   /// The owning triangle's nodes, reordered so that the nodes with nonzero weight come first.
@@ -51,12 +62,13 @@ struct ContactSites {
 /// Number of sites at level L: n + L e + L(L-1)/2 t for n nodes, e edges, t triangles.
 Index num_contact_sites(const Mesh& mesh, int level);
 
-/// Builds the sites of all triangles at refinement level 0..3 (throws std::invalid_argument
-/// otherwise) with their exclusion sets.
+/// Builds the sites of all triangles at refinement level 0..kMaxContactRefinement (throws
+/// std::invalid_argument otherwise) with their exclusion sets.
 ContactSites build_contact_sites(const Mesh& mesh, int level);
 
-/// Smallest L in 0..3 with mean edge length / (L + 1) <= sigma. If even L = 3 is too coarse, it
-/// returns 3 and sets *capped (or, when capped is null, prints a warning on stderr).
-int auto_refinement(const Mesh& mesh, double sigma, bool* capped = nullptr);
+/// Smallest L in 0..max_level with mean edge length / (L + 1) <= sigma (above the coarse-mesh
+/// floors). If even L = max_level is too coarse, it returns max_level and sets *capped (or, when
+/// capped is null, prints a warning on stderr). max_level is clamped to kMaxContactRefinement.
+int auto_refinement(const Mesh& mesh, double sigma, bool* capped = nullptr, int max_level = 3);
 
 }  // namespace crumple

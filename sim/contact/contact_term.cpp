@@ -24,7 +24,8 @@ ContactTerm::ContactTerm(const Mesh& mesh, const ContactSettings& settings)
     : mesh_(&mesh), settings_(settings) {
   if (!(settings.sigma > 0.0)) throw std::invalid_argument("ContactTerm: sigma must be positive");
   if (settings.skin < 0.0) throw std::invalid_argument("ContactTerm: skin must be >= 0");
-  if (settings_.level < 0) settings_.level = auto_refinement(mesh, settings.sigma);
+  if (settings_.level < 0)
+    settings_.level = auto_refinement(mesh, settings.sigma, nullptr, settings.max_level);
   law_.ks = settings.ks;
   law_.sigma = settings.sigma;
   sites_ = build_contact_sites(mesh, settings_.level);

@@ -40,8 +40,10 @@ namespace crumple {
 struct ContactSettings {
   double ks = 1.0;     ///< contact stiffness (eq. 10; the paper uses the spring constant ks)
   double sigma = 0.0;  ///< interaction range (paper: h_eff = sqrt(8 kb / ks)); must be > 0
-  int level = -1;      ///< site refinement 0..3; -1 picks auto_refinement(mesh, sigma)
+  int level = -1;      ///< site refinement 0..15; -1 picks auto_refinement(mesh, sigma)
   double skin = 0.5;   ///< candidate-list skin as a fraction of sigma; 0 re-searches every update
+  int max_level = 3;   ///< the finest level auto_refinement may pick (after skin: positional
+                       ///< initialisers {ks, sigma, level, skin} stay valid)
 };
 
 /// Counters for reporting the cost of contact handling.

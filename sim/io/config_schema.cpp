@@ -4,6 +4,7 @@
 // time is already a million frames per second.
 #include "sim/io/config_schema.hpp"
 
+#include "sim/contact/contact_sites.hpp"
 #include "sim/integrate/settings_schema.hpp"
 
 namespace crumple {
@@ -69,6 +70,13 @@ Section material_section() {
   return s;
 }
 
+// "auto" and every level build_contact_sites makes.
+std::vector<std::string> refinement_choices() {
+  std::vector<std::string> c{"auto"};
+  for (int L = 0; L <= kMaxContactRefinement; ++L) c.push_back(std::to_string(L));
+  return c;
+}
+
 Section contact_section() {
   using S = ContactParams;
   Section s;
@@ -77,9 +85,15 @@ Section contact_section() {
   s.keys = {
       flag("enabled", &S::enabled).means("self-contact on or off"),
       real("sigma", &S::sigma).at_least(0).units("m").shown_default("0: h_eff")
-          .means("interaction range; 0: h_eff, raised to half an edge on coarse meshes"),
-      word("refinement", &S::refinement, {"auto", "0", "1", "2", "3"})
+          .means("interaction range; 0: h_eff, raised to sigma_floor edges on coarse meshes"),
+      real("sigma_floor", &S::sigma_floor).at_least(0).units("edges")
+          .means("with sigma = 0, the least range in mean edge lengths; 0: h_eff on every mesh, "
+                 "with the sites refined to it (max_refinement; docs/MODEL.md §6.6)"),
+      word("refinement", &S::refinement, refinement_choices())
           .means("contact-site refinement level (Fig. 2); auto: sites at most sigma apart"),
+      integer("max_refinement", &S::max_refinement).in(0, kMaxContactRefinement)
+          .means("the finest level auto may pick; a site spacing still above sigma is capped "
+                 "there with a warning"),
       real("stiffness", &S::stiffness).at_least(0).units("N/m").shown_default("0: ks")
           .means("contact stiffness; 0: the spring constant ks"),
       real("skin", &S::skin).in(0, 10).means("candidate-list skin, as a fraction of sigma"),

@@ -42,7 +42,9 @@ struct MaterialParams {
 struct ContactParams {
   bool enabled = true;
   double sigma = 0;              ///< interaction range (m); 0: h_eff
-  std::string refinement = "auto";  ///< auto | 0 | 1 | 2 | 3
+  double sigma_floor = 0.5;      ///< with sigma = 0, the least range, in mean edge lengths
+  std::string refinement = "auto";  ///< auto | 0 .. kMaxContactRefinement
+  int max_refinement = 3;        ///< the finest level auto may pick
   double stiffness = 0;          ///< contact stiffness; 0: ks
   double skin = ContactSettings{}.skin;  ///< candidate-list skin, fraction of sigma
   bool fold_barrier = true;      ///< keep hinges from folding through themselves

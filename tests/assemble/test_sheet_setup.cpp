@@ -3,6 +3,7 @@
 // win; the stages see the resolved material; a yield radius becomes the yield curvature of
 // each mesh's hinges.
 #include "sim/assemble/sheet_setup.hpp"
+#include "sim/contact/contact_sites.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/mesh/generate.hpp"
 #include "sim/mesh/quality.hpp"
@@ -38,6 +39,30 @@ TEST(ContactSettings, RangeIsHeffUnlessTheMeshIsTooCoarse) {
   EXPECT_FALSE(raised);
   EXPECT_NEAR(cs.sigma, thick.h_eff, 1e-15);
   EXPECT_NEAR(thick.h_eff, 4 * half_edge, 1e-12);  // h_eff = h (paper eq. 5-7)
+}
+
+TEST(ContactSettings, ZeroFloorKeepsHeffAndRefinesTheSites) {
+  const Mesh mesh = generate_mesh(MeshSpec{"square", 0.1, 400, 1});
+  const ResolvedMaterial thin = mylar(mesh, 2.5e-4);
+  ContactParams c;
+  c.sigma_floor = 0;
+  c.max_refinement = kMaxContactRefinement;
+  bool raised = true;
+  const ContactSettings cs = contact_settings(c, mesh, thin, &raised);
+  EXPECT_FALSE(raised);
+  EXPECT_NEAR(cs.sigma, thin.h_eff, 1e-15);
+  EXPECT_EQ(cs.max_level, kMaxContactRefinement);
+  // The sites are refined as far as the cap allows: on this 400-node mesh (edge about 5 mm) even
+  // 16 sites per edge are 0.33 mm apart, more than h, so auto stops at the cap and says so.
+  const double l = mesh.mean_edge_length();
+  bool capped = false;
+  EXPECT_EQ(auto_refinement(mesh, cs.sigma, &capped, cs.max_level), kMaxContactRefinement);
+  EXPECT_TRUE(capped);
+  EXPECT_GT(l / (kMaxContactRefinement + 1), cs.sigma);
+  // A floor of a quarter edge raises the range to it on this coarse mesh.
+  c.sigma_floor = 0.25;
+  EXPECT_DOUBLE_EQ(contact_settings(c, mesh, thin, &raised).sigma, 0.25 * l);
+  EXPECT_TRUE(raised);
 }
 
 TEST(ContactSettings, ExplicitValuesWin) {

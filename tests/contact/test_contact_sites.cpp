@@ -23,24 +23,27 @@ const Mesh& mesh() {
 TEST(ContactSites, CountsMatchLattice) {
   const Mesh& m = mesh();
   // Per triangle (L+2)(L+3)/2 lattice points; shared ones counted once.
+  // Per edge L sites, per triangle L(L-1)/2 inside: listed for the first levels, then the formula.
   const int per_level_edge[] = {0, 1, 2, 3}, per_level_interior[] = {0, 0, 1, 3};
-  for (int L = 0; L <= 3; ++L) {
+  for (int L : {0, 1, 2, 3, 4, 7, kMaxContactRefinement}) {
     const ContactSites cs = build_contact_sites(m, L);
-    EXPECT_EQ(cs.size(), m.num_nodes() + per_level_edge[L] * m.num_edges() +
-                             per_level_interior[L] * m.num_triangles());
+    const int edge = L <= 3 ? per_level_edge[L] : L;
+    const int interior = L <= 3 ? per_level_interior[L] : L * (L - 1) / 2;
+    EXPECT_EQ(cs.size(), m.num_nodes() + edge * m.num_edges() + interior * m.num_triangles());
     EXPECT_EQ(cs.size(), num_contact_sites(m, L));
     int counts[4] = {0, 0, 0, 0};
     for (const auto& s : cs.sites) ++counts[s.count];
     EXPECT_EQ(counts[1], m.num_nodes());
-    EXPECT_EQ(counts[2], per_level_edge[L] * m.num_edges());
-    EXPECT_EQ(counts[3], per_level_interior[L] * m.num_triangles());
+    EXPECT_EQ(counts[2], edge * m.num_edges());
+    EXPECT_EQ(counts[3], interior * m.num_triangles());
   }
-  EXPECT_THROW(build_contact_sites(m, 4), std::invalid_argument);
+  EXPECT_THROW(build_contact_sites(m, kMaxContactRefinement + 1), std::invalid_argument);
+  EXPECT_THROW(build_contact_sites(m, -1), std::invalid_argument);
 }
 
 TEST(ContactSites, EachPointOnceOnTheLatticeOfItsTriangle) {
   const Mesh& m = mesh();
-  for (int L = 0; L <= 3; ++L) {
+  for (int L : {0, 1, 2, 3, 5, 8}) {
     const ContactSites cs = build_contact_sites(m, L);
     Eigen::Matrix3Xd pos;
     cs.positions(m.ref_flat(), pos);
@@ -92,6 +95,17 @@ TEST(ContactSites, AutoRefinementPicksSpacingBelowRange) {
   EXPECT_FALSE(capped);
   EXPECT_EQ(auto_refinement(m, 0.1 * l, &capped), 3);
   EXPECT_TRUE(capped);
+  // A raised cap refines to the range: 10 sites per edge for sigma = l/10, the floors unchanged.
+  EXPECT_EQ(auto_refinement(m, 0.1 * l, &capped, 12), 9);
+  EXPECT_FALSE(capped);
+  EXPECT_EQ(auto_refinement(m, 0.05 * l, &capped, 12), 12);
+  EXPECT_TRUE(capped);
+  EXPECT_EQ(auto_refinement(m, 0.5 * l, &capped, 12), 3);
+  EXPECT_EQ(auto_refinement(m, 0.6 * l, &capped, 12), 2);
+  EXPECT_EQ(auto_refinement(m, 0.05 * l, &capped, 99), kMaxContactRefinement);  // clamped cap
+  EXPECT_TRUE(capped);
+  // A lower cap holds even against the floors.
+  EXPECT_EQ(auto_refinement(m, 0.5 * l, &capped, 1), 1);
   for (double r : {1.5, 1.0, 0.7, 0.5, 0.34, 0.26}) {
     const int L = auto_refinement(m, r * l, &capped);
     EXPECT_LE(l / (L + 1), r * l * (1 + 1e-12));
@@ -106,7 +120,7 @@ TEST(ContactSites, AutoRefinementPicksSpacingBelowRange) {
 // T(s) = every triangle whose closed reference region contains the site.
 TEST(ContactSites, ExclusionEqualsTriangleAdjacencyRule) {
   const Mesh& m = mesh();
-  for (int L = 0; L <= 3; ++L) {
+  for (int L : {0, 1, 2, 3, 5}) {
     const ContactSites cs = build_contact_sites(m, L);
     Eigen::Matrix3Xd pos;
     cs.positions(m.ref_flat(), pos);

@@ -130,20 +130,45 @@ TEST(ContactTerm, NoNetForceOrTorque) {
   }
 }
 
+// A range well below the edge (a sheet thinner than its mesh, contact.sigma_floor 0) on sites
+// refined to it: ten sites per edge, the same law on each pair.
+TEST(ContactTerm, FiniteDifferencesWithSitesFinerThanTheMesh) {
+  const Mesh m = two_sheets(4, 1.0, 0.2, 3);
+  const double sigma = 0.1 * m.mean_edge_length();
+  ContactSettings cs{2.0, sigma, -1, 0.3};
+  cs.max_level = kMaxContactRefinement;
+  ContactTerm term(m, cs);
+  EXPECT_EQ(term.sites().level, 9);
+  const State s = state_at(m, jiggle(stack_sheets(m, 1.0, 0.5 * sigma, Vec3(0.07, 0.04, 0)),
+                                     0.05 * sigma, 31));
+  term.update(s.x);
+  ASSERT_GT(term.num_active(s.x), 50);
+  const FdReport r = check_term(term, s, m.num_hinges(), 1e-8);
+  EXPECT_GT(term.energy(s), 0.0);
+  EXPECT_LT(r.force, 1e-6);
+  EXPECT_LT(r.hx, 1e-6);
+  EXPECT_LT(r.hx_asymmetry, 1e-12);
+}
+
 TEST(ContactTerm, FlatAndRolledSheetsFeelNoContact) {
   const Mesh m = grid_mesh(30, 30, 1.0, 1.0, 0.2, 7);
   const double l = m.mean_edge_length();
-  for (double ratio : {0.1, 0.2, 0.3, 0.5, 0.6, 0.8, 1.0}) {
-    ContactTerm term(m, {1.0, ratio * l, -1, 0.3});
-    // Rolled over 270 degrees (R = 0.21, about 5 edge lengths) and gently (R = 0.6).
-    for (const VecX& x : {m.ref_flat(), roll_sheet(m, 1.0 / (1.5 * M_PI)), roll_sheet(m, 0.6)}) {
-      const State s = state_at(m, x);
-      term.update(s.x);
-      EXPECT_EQ(term.num_active(s.x), 0) << "sigma/l = " << ratio;
-      EXPECT_EQ(term.energy(s), 0.0);
-      EXPECT_EQ(force_of(term, s).norm(), 0.0);
+  // Sites capped at a quarter edge (the default), or refined down to sigma.
+  for (int cap : {3, kMaxContactRefinement})
+    for (double ratio : {0.1, 0.2, 0.3, 0.5, 0.6, 0.8, 1.0}) {
+      ContactSettings cs{1.0, ratio * l, -1, 0.3};
+      cs.max_level = cap;
+      ContactTerm term(m, cs);
+      // Rolled over 270 degrees (R = 0.21, about 5 edge lengths) and gently (R = 0.6).
+      for (const VecX& x : {m.ref_flat(), roll_sheet(m, 1.0 / (1.5 * M_PI)), roll_sheet(m, 0.6)}) {
+        const State s = state_at(m, x);
+        term.update(s.x);
+        EXPECT_EQ(term.num_active(s.x), 0)
+            << "sigma/l = " << ratio << ", level " << term.sites().level;
+        EXPECT_EQ(term.energy(s), 0.0);
+        EXPECT_EQ(force_of(term, s).norm(), 0.0);
+      }
     }
-  }
 }
 
 TEST(ContactTerm, StackedLayersRepel) {
