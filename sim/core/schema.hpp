@@ -109,7 +109,7 @@ template <class T, class M>
 Key integer(const char* name, M T::*member) {
   Key k = real(name, member);
   k.kind = Kind::Integer;
-  k.unit = "-";
+  k.unit.assign(1, '-');  // not = "-": GCC 12 warns of a false overlap (-Wrestrict)
   return k;
 }
 
