@@ -48,6 +48,10 @@ def crossings(diag, run):
                       line)
         if m:
             out[m.group(1)] = tuple(int(m.group(i)) for i in (2, 3, 4))
+    # A run has at least its initial frame: nothing parsed means the tool's output changed, and
+    # reading that as "no crossings" would be wrong.
+    if not out:
+        fail(f"{diag} {run}: no per-stage line understood in its output:\n{r.stdout[:300]}")
     return out
 
 

@@ -1,6 +1,7 @@
 // The physics rules of a run's setup (sheet_setup.hpp).
 #include "sim/assemble/sheet_setup.hpp"
 
+#include "sim/contact/contact_sites.hpp"
 #include "sim/core/errors.hpp"
 #include "sim/mesh/quality.hpp"
 
@@ -32,6 +33,22 @@ ContactSettings contact_settings(const ContactParams& c, const Mesh& mesh,
   cs.level = c.refinement == "auto" ? -1 : std::stoi(c.refinement);
   cs.max_level = c.max_refinement;
   cs.skin = c.skin;
+  // A range from the floor rule must be resolved by the sites auto may build; otherwise layers
+  // slip between sites (an explicit contact.sigma keeps the warning of auto_refinement).
+  if (c.sigma <= 0 && cs.level < 0) {
+    bool capped = false;
+    const int level = auto_refinement(mesh, cs.sigma, &capped, cs.max_level);
+    if (capped) {
+      std::ostringstream os;
+      os << "contact.sigma_floor = " << c.sigma_floor << " keeps the contact range at "
+         << cs.sigma << " m, but contact.max_refinement = " << c.max_refinement
+         << " stops the sites at level " << level << ", " << mesh.mean_edge_length() / (level + 1)
+         << " m apart on this mesh: layers would slip between them. Raise "
+            "contact.max_refinement (at most "
+         << kMaxContactRefinement << ") or contact.sigma_floor, or refine the mesh";
+      throw InputError(os.str());
+    }
+  }
   return cs;
 }
 

@@ -151,12 +151,6 @@ int auto_refinement(const Mesh& mesh, double sigma, bool* capped, int max_level)
   const double l = mesh.mean_edge_length();
   // Smallest L with l/(L+1) <= sigma; a tiny tolerance so that l = sigma exactly gives L = 0.
   const int need = std::max(0, static_cast<int>(std::ceil(l / sigma * (1.0 - 1e-12) - 1.0)));
-  const bool cap = need > max_level;
-  if (capped)
-    *capped = cap;
-  else if (cap)
-    std::cerr << "warning: contact refinement capped at level " << max_level << ": site spacing "
-              << l / (max_level + 1) << " exceeds the interaction range " << sigma << "\n";
   // Floors on coarse meshes. Node and edge sites carry the nodes of all their triangles, so
   // between two triangles one edge apart (no shared node) every node and edge site pair is
   // excluded, and only interior sites keep such triangles from passing through each other at
@@ -165,9 +159,19 @@ int auto_refinement(const Mesh& mesh, double sigma, bool* capped, int max_level)
   // alone leaves the corners uncovered and the floor is 3. Measured, radial confinement of a
   // 250-node disk (sigma = 0.5 l): 25 crossings at level 1, 2 at level 2, none at level 3.
   // A flat sheet stays force-free at these levels (sigma < 0.97 l at level 2).
-  if (need < 3 && sigma < 0.577 * l) return std::min(3, max_level);
-  if (need < 2 && sigma < 0.9 * l) return std::min(2, max_level);
-  return std::min(need, max_level);
+  int want = need;
+  if (need < 3 && sigma < 0.577 * l)
+    want = 3;
+  else if (need < 2 && sigma < 0.9 * l)
+    want = 2;
+  const bool cap = want > max_level;
+  if (capped)
+    *capped = cap;
+  else if (cap)
+    std::cerr << "warning: contact refinement capped at level " << max_level << " below the "
+              << want << " the range " << sigma << " needs (site spacing " << l / (max_level + 1)
+              << ")\n";
+  return std::min(want, max_level);
 }
 
 }  // namespace crumple

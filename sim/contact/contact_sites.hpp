@@ -34,8 +34,8 @@
 
 namespace crumple {
 
-/// The finest site refinement built: level 15 is 16 sites per edge, about 70 times the sites of
-/// level 0; beyond it a finer mesh is the cheaper way to a short range.
+/// The finest site refinement built: level 15 spaces the sites a sixteenth of an edge apart, about
+/// 256 times the sites of level 0; beyond it a finer mesh is the cheaper way to a short range.
 inline constexpr int kMaxContactRefinement = 15;
 
 struct ContactSite {
@@ -66,9 +66,9 @@ Index num_contact_sites(const Mesh& mesh, int level);
 /// std::invalid_argument otherwise) with their exclusion sets.
 ContactSites build_contact_sites(const Mesh& mesh, int level);
 
-/// Smallest L in 0..max_level with mean edge length / (L + 1) <= sigma (above the coarse-mesh
-/// floors). If even L = max_level is too coarse, it returns max_level and sets *capped (or, when
-/// capped is null, prints a warning on stderr). max_level is clamped to kMaxContactRefinement.
+/// Smallest L with mean edge length / (L + 1) <= sigma, raised to the coarse-mesh floors (2 or
+/// 3). If that level is above max_level, it returns max_level and sets *capped (or, when capped
+/// is null, prints a warning on stderr). max_level is clamped to 0..kMaxContactRefinement.
 int auto_refinement(const Mesh& mesh, double sigma, bool* capped = nullptr, int max_level = 3);
 
 }  // namespace crumple

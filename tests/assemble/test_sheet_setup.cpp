@@ -13,6 +13,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <utility>
 
 using namespace crumple;
 
@@ -43,26 +45,44 @@ TEST(ContactSettings, RangeIsHeffUnlessTheMeshIsTooCoarse) {
 
 TEST(ContactSettings, ZeroFloorKeepsHeffAndRefinesTheSites) {
   const Mesh mesh = generate_mesh(MeshSpec{"square", 0.1, 400, 1});
-  const ResolvedMaterial thin = mylar(mesh, 2.5e-4);
+  const double l = mesh.mean_edge_length();  // about 5 mm
   ContactParams c;
   c.sigma_floor = 0;
   c.max_refinement = kMaxContactRefinement;
   bool raised = true;
-  const ContactSettings cs = contact_settings(c, mesh, thin, &raised);
+  // A 1 mm sheet on this mesh: the range stays h_eff, and auto refines the sites to it.
+  const ResolvedMaterial thick = mylar(mesh, 1e-3);
+  const ContactSettings cs = contact_settings(c, mesh, thick, &raised);
   EXPECT_FALSE(raised);
-  EXPECT_NEAR(cs.sigma, thin.h_eff, 1e-15);
+  EXPECT_NEAR(cs.sigma, thick.h_eff, 1e-15);
   EXPECT_EQ(cs.max_level, kMaxContactRefinement);
-  // The sites are refined as far as the cap allows: on this 400-node mesh (edge about 5 mm) even
-  // 16 sites per edge are 0.33 mm apart, more than h, so auto stops at the cap and says so.
-  const double l = mesh.mean_edge_length();
-  bool capped = false;
-  EXPECT_EQ(auto_refinement(mesh, cs.sigma, &capped, cs.max_level), kMaxContactRefinement);
-  EXPECT_TRUE(capped);
-  EXPECT_GT(l / (kMaxContactRefinement + 1), cs.sigma);
-  // A floor of a quarter edge raises the range to it on this coarse mesh.
+  bool capped = true;
+  const int L = auto_refinement(mesh, cs.sigma, &capped, cs.max_level);
+  EXPECT_FALSE(capped);
+  EXPECT_GT(L, 3);
+  EXPECT_LE(l / (L + 1), cs.sigma * (1 + 1e-12));
+  // The 0.25 mm sheet: even at level 15 the sites are a sixteenth of an edge, 0.33 mm, apart,
+  // more than h; with the floor lowered that is an input error naming the keys, and so is the
+  // 1 mm sheet with the default cap.
+  const ResolvedMaterial thin = mylar(mesh, 2.5e-4);
+  for (const auto& [mat, cap] : {std::pair{thin, kMaxContactRefinement}, std::pair{thick, 3}}) {
+    c.max_refinement = cap;
+    try {
+      contact_settings(c, mesh, mat);
+      ADD_FAILURE() << "no error at max_refinement " << cap;
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("contact.max_refinement"), std::string::npos) << what;
+      EXPECT_NE(what.find("contact.sigma_floor"), std::string::npos) << what;
+    }
+  }
+  // A floor of a quarter edge raises the range to it on this coarse mesh (level 3 resolves it).
   c.sigma_floor = 0.25;
+  c.max_refinement = 3;
   EXPECT_DOUBLE_EQ(contact_settings(c, mesh, thin, &raised).sigma, 0.25 * l);
   EXPECT_TRUE(raised);
+  // The defaults never stop short: half an edge at level 3.
+  EXPECT_NO_THROW(contact_settings(ContactParams{}, mesh, thin));
 }
 
 TEST(ContactSettings, ExplicitValuesWin) {

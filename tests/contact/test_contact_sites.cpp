@@ -95,7 +95,8 @@ TEST(ContactSites, AutoRefinementPicksSpacingBelowRange) {
   EXPECT_FALSE(capped);
   EXPECT_EQ(auto_refinement(m, 0.1 * l, &capped), 3);
   EXPECT_TRUE(capped);
-  // A raised cap refines to the range: 10 sites per edge for sigma = l/10, the floors unchanged.
+  // A raised cap refines to the range: sites a tenth of an edge apart (level 9) for sigma = l/10,
+  // the floors unchanged.
   EXPECT_EQ(auto_refinement(m, 0.1 * l, &capped, 12), 9);
   EXPECT_FALSE(capped);
   EXPECT_EQ(auto_refinement(m, 0.05 * l, &capped, 12), 12);
@@ -104,8 +105,11 @@ TEST(ContactSites, AutoRefinementPicksSpacingBelowRange) {
   EXPECT_EQ(auto_refinement(m, 0.6 * l, &capped, 12), 2);
   EXPECT_EQ(auto_refinement(m, 0.05 * l, &capped, 99), kMaxContactRefinement);  // clamped cap
   EXPECT_TRUE(capped);
-  // A lower cap holds even against the floors.
+  // A lower cap holds even against the floors, and says so.
   EXPECT_EQ(auto_refinement(m, 0.5 * l, &capped, 1), 1);
+  EXPECT_TRUE(capped);
+  EXPECT_EQ(auto_refinement(m, 0.5 * l, &capped, 3), 3);
+  EXPECT_FALSE(capped);
   for (double r : {1.5, 1.0, 0.7, 0.5, 0.34, 0.26}) {
     const int L = auto_refinement(m, r * l, &capped);
     EXPECT_LE(l / (L + 1), r * l * (1 + 1e-12));

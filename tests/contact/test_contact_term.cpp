@@ -131,7 +131,7 @@ TEST(ContactTerm, NoNetForceOrTorque) {
 }
 
 // A range well below the edge (a sheet thinner than its mesh, contact.sigma_floor 0) on sites
-// refined to it: ten sites per edge, the same law on each pair.
+// refined to it: a tenth of an edge apart (level 9), the same law on each pair.
 TEST(ContactTerm, FiniteDifferencesWithSitesFinerThanTheMesh) {
   const Mesh m = two_sheets(4, 1.0, 0.2, 3);
   const double sigma = 0.1 * m.mean_edge_length();

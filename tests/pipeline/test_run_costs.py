@@ -4,7 +4,7 @@ printed, the crossing counts those the diagnostic printed (a stand-in diagnostic
 crossing, so the parse is checked on a nonzero count), and a missing run is an error naming it
 with nothing written.
 
-Usage: test_run_costs.py CRUMPLE_SIM (run from the repository root)."""
+Usage: test_run_costs.py CRUMPLE_SIM DIAG_INTERSECTIONS (run from the repository root)."""
 import csv
 import json
 import os
@@ -17,7 +17,7 @@ SCRIPT = "pipeline/sweeps/run_costs.py"
 
 
 def main():
-    sim = sys.argv[1]
+    sim, real_diag = sys.argv[1], sys.argv[2]
     with tempfile.TemporaryDirectory() as tmp:
         run = os.path.join(tmp, "g", "seed1.h5")
         os.makedirs(os.path.dirname(run))
@@ -54,6 +54,25 @@ def main():
                 row["compress_most_crossings"]) == ("5", "2", "7"), row
         assert (row["roll_frames"], row["roll_frames_crossing"]) == ("3", "0"), row
         assert row["unfold_frames"] == "0", row
+
+        # The real diagnostic on the real run: every stored frame checked, none crossing (a flat
+        # sheet rolled for 0.6 s), and the frame counts add up to the run's stored frames.
+        r = subprocess.run([sys.executable, SCRIPT, "--points", points, "--diag", real_diag,
+                            "-o", out], capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+        with open(out) as f:
+            row = list(csv.DictReader(line for line in f if not line.startswith("#")))[0]
+        stages = ("roll", "compress", "release", "unfold")
+        assert sum(int(row[f"{s}_frames"]) for s in stages) > 0, row
+        assert all(row[f"{s}_frames_crossing"] == "0" for s in stages), row
+
+        # A diagnostic whose output is not understood is an error, not "no crossings".
+        with open(diag, "w") as f:
+            f.write("#!/bin/sh\necho something else\nexit 0\n")
+        r = subprocess.run([sys.executable, SCRIPT, "--points", points, "--diag", diag, "-o",
+                            out + ".3"], capture_output=True, text=True)
+        assert r.returncode == 2 and "no per-stage line" in r.stderr, (r.returncode, r.stderr)
+        assert not os.path.exists(out + ".3")
 
         # A run that is not there: exit 2, named, no CSV.
         with open(points, "w") as f:
