@@ -247,7 +247,11 @@ void write_results(const std::string& dir_s, const RunData& run, const RunAnalys
   const fs::path dir = folder_path(dir_s);
   const fs::path parent = dir.has_parent_path() ? dir.parent_path() : fs::path(".");
   fs::create_directories(parent);
-  const std::string tag = "." + dir.filename().string() + "." + std::to_string(::getpid());
+  // Built by appending, not as "." + string: GCC 12 warns of a false overlap (-Wrestrict) there.
+  std::string tag(1, '.');
+  tag += dir.filename().string();
+  tag += '.';
+  tag += std::to_string(::getpid());
   const fs::path tmp = parent / (tag + ".tmp"), old = parent / (tag + ".old");
   fs::remove_all(tmp);
   try {
