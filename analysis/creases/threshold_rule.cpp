@@ -70,7 +70,8 @@ ThresholdRule threshold_from_crease_angle(double angle_deg, double c0, bool c0_f
   std::ostringstream s;
   s << "crease when |p| > " << r.threshold << " = 2 sin(" << angle_deg
     << " deg / 2), "
-    << (angle_from_config ? "output.crease_angle of the run's /config" : "given with --crease-angle")
+    << (angle_from_config ? "output.crease_angle of the run's /config"
+                          : "given with --crease-angle")
     << ": a permanent fold of more than "
     << angle_deg << " degrees, the same on every mesh";
   if (c0 > 0) s << " (that is " << r.factor << " c0, " << c0_source(r) << ")";

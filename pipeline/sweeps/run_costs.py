@@ -2,7 +2,7 @@
 """The cost and the integrity of every run of a sweep, as one CSV (docs/MODEL.md §6.6).
 
 Per run: the integration wall and the contact search's share of it, read from the run file's
-/log attributes (h5dump, hdf5-tools), and the stored frames in which layers of the sheet cross
+/log counters (the project's reader, pipeline/python/crumple), and the stored frames in which layers of the sheet cross
 each other, per stage, from tests/bench/diag_intersections (exact CGAL predicates). Wall times are
 those of the machine the runs ran on; the counts of searches and steps are exact.
 
@@ -19,6 +19,9 @@ import re
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+import crumple  # noqa: E402
+
 LOG_KEYS = ["wall_total", "contact_searches", "contact_search_s", "contact_eval_s",
             "steps_implicit", "steps_explicit"]
 STAGES = ["roll", "compress", "release", "unfold"]
@@ -29,12 +32,13 @@ def fail(msg):
     sys.exit(2)
 
 
-def log_attr(run, key):
-    r = subprocess.run(["h5dump", "-a", f"/log/{key}", run], capture_output=True, text=True)
-    m = re.search(r"\(0\):\s*([-+.0-9eE]+)", r.stdout)
-    if r.returncode != 0 or not m:
-        fail(f"{run}: no /log attribute {key} (h5dump: {r.stderr.strip()[:200]})")
-    return float(m.group(1))
+def log_counters(run):
+    """The run's /log counters (wall times, searches, steps), named as in LOG_KEYS."""
+    try:
+        counters = crumple.load_run(run).log_counters
+        return {k: float(counters[k]) for k in LOG_KEYS}
+    except (OSError, ValueError, KeyError) as e:
+        fail(f"{run}: no /log counter {e}" if isinstance(e, KeyError) else f"{run}: {e}")
 
 
 def crossings(diag, run):
@@ -74,9 +78,9 @@ def main():
         if not os.path.isfile(run):
             fail(f"{run}: no such run (make sweep first)")
         row = {"group": p["group"], "seed": p["seed"]}
-        for k in LOG_KEYS:
-            v = log_attr(run, k)
-            row[k] = int(v) if k.startswith(("steps", "contact_searches")) else v
+        for k, v in log_counters(run).items():
+            # Seconds to six significant figures: the wall of a shared machine is no finer.
+            row[k] = int(v) if k.startswith(("steps", "contact_searches")) else float(f"{v:.6g}")
         row["search_share"] = round(row["contact_search_s"] / row["wall_total"], 3)
         cr = crossings(a.diag, run)
         for s in STAGES:

@@ -146,8 +146,8 @@ void print_setup(const Mesh& mesh, const Params& p, const Simulation& run) {
   if (run.contact_range_raised())
     std::fprintf(stderr, "  contact: mesh too coarse to resolve h_eff; range raised to %.3g edge\n",
                  p.contact.sigma_floor);
-  std::fprintf(stderr, "  contact: sigma %.4g m, %d sites (level %d)\n", run.contact_settings().sigma,
-               static_cast<int>(run.contact()->pairs->sites().size()),
+  std::fprintf(stderr, "  contact: sigma %.4g m, %d sites (level %d)\n",
+               run.contact_settings().sigma, static_cast<int>(run.contact()->pairs->sites().size()),
                run.contact()->pairs->sites().level);
 }
 

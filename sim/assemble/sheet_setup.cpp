@@ -52,6 +52,15 @@ ContactSettings contact_settings(const ContactParams& c, const Mesh& mesh,
   return cs;
 }
 
+ContactSettings contact_settings(const Params& p, const Mesh& mesh,
+                                 const ResolvedMaterial& material, bool* raised) {
+  try {
+    return contact_settings(p.contact, mesh, material, raised);
+  } catch (const InputError& e) {
+    throw InputError(p.where("contact.sigma_floor") + ": " + e.what());
+  }
+}
+
 double plastic_c0(const Params& p, const Mesh& mesh) {
   if (p.material.yield_angle > 0)
     return 2.0 * std::sin(p.material.yield_angle * std::numbers::pi / 360.0);

@@ -26,6 +26,11 @@ SheetInfo sheet_info(const Mesh& mesh, const ResolvedMaterial& material, double 
 ContactSettings contact_settings(const ContactParams& c, const Mesh& mesh,
                                  const ResolvedMaterial& material, bool* raised = nullptr);
 
+/// The same for a run's parameters: an input error names where in the input the contact keys
+/// were set (file, line and key, or the --set that gave them).
+ContactSettings contact_settings(const Params& p, const Mesh& mesh,
+                                 const ResolvedMaterial& material, bool* raised = nullptr);
+
 /// The hinge yield curvature c0 (paper eq. 19, in units of 2 sin(theta/2)) of a run on `mesh`:
 /// integrator.plastic_c0, or, when material.yield_radius R_y is set, the curvature of a hinge of
 /// the mesh's mean width w (mean_hinge_width) bent about its edge to the radius R_y,

@@ -22,7 +22,7 @@ Simulation::Simulation(const Params& p, const Mesh& mesh, const StageRegistry& r
       material_(resolve_material(p.material, mesh.total_area(), mesh.num_nodes())),
       info_(sheet_info(mesh, material_, p.mesh.size)),
       model_(mesh, material_.model),
-      contact_settings_(crumple::contact_settings(p.contact, mesh, material_, &raised_)),
+      contact_settings_(crumple::contact_settings(p, mesh, material_, &raised_)),
       contact_(make_contact(p, mesh, model_, contact_settings_)),
       contact_on_(contact_ != nullptr),
       integ_(model_, integrator_settings(p, mesh)),

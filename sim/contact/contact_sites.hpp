@@ -1,16 +1,17 @@
 // Contact sites: the nodes plus refined points on edges and triangle interiors (paper §2.4,
 // Fig. 2), and the rule that keeps neighbouring sites from interacting.
 //
-// Refinement level L (0..kMaxContactRefinement): on every triangle the sites are the points of the barycentric
-// lattice with spacing 1/(L+1), i.e. weights (i, j, k)/(L+1) with i + j + k = L + 1. Level 0 is
-// the nodes only; level 1 adds the edge midpoints; level 2 adds two points per edge and one
-// interior point; level 3 three per edge and three interior points; level L has L per edge and
-// L(L-1)/2 inside. Sites along an edge are
-// spaced by |e|/(L+1), so with mean edge length l the spacing is l/(L+1); auto_refinement picks
-// the smallest L with l/(L+1) <= sigma (up to a cap, 3 unless the config raises it), so a point of the sheet is never farther than about
-// 0.6 sigma from a site and a sheet approaching another meets the repulsion before passing; and
-// at least L = 2 while sigma < 0.9 l, because only interior sites (L >= 2) can keep apart two
-// triangles one edge apart (their node and edge sites exclude each other, see below).
+// Refinement level L (0..kMaxContactRefinement): on every triangle the sites are the points of
+// the barycentric lattice with spacing 1/(L+1), i.e. weights (i, j, k)/(L+1) with
+// i + j + k = L + 1. Level 0 is the nodes only; level 1 adds the edge midpoints; level 2 adds two
+// points per edge and one interior point; level 3 three per edge and three interior points;
+// level L has L per edge and L(L-1)/2 inside. Sites along an edge are spaced by |e|/(L+1), so
+// with mean edge length l the spacing is l/(L+1); auto_refinement picks the smallest L with
+// l/(L+1) <= sigma (up to a cap, 3 unless the config raises it), so a point of the sheet is
+// never farther than about 0.6 sigma from a site and a sheet approaching another meets the
+// repulsion before passing; and at least L = 2 while sigma < 0.9 l, because only interior sites
+// (L >= 2) can keep apart two triangles one edge apart (their node and edge sites exclude each
+// other, see below).
 // Every physical site exists once: node sites first (site s = node s), then the L sites of each
 // edge (owned by the edge's first triangle), then the L(L-1)/2 interior sites of each triangle.
 //

@@ -92,8 +92,8 @@ Section contact_section() {
       word("refinement", &S::refinement, refinement_choices())
           .means("contact-site refinement level (Fig. 2); auto: sites at most sigma apart"),
       integer("max_refinement", &S::max_refinement).in(0, kMaxContactRefinement)
-          .means("the finest level auto may pick; a site spacing still above sigma is capped "
-                 "there with a warning"),
+          .means("the finest level auto may pick; a range from sigma_floor it cannot resolve "
+                 "is an input error, an explicit sigma a warning"),
       real("stiffness", &S::stiffness).at_least(0).units("N/m").shown_default("0: ks")
           .means("contact stiffness; 0: the spring constant ks"),
       real("skin", &S::skin).in(0, 10).means("candidate-list skin, as a fraction of sigma"),
