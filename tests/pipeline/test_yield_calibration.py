@@ -8,7 +8,8 @@ the kept calibration:
 - protocols/axial_crumpling.yaml states the angle docs/studies/yield_calibration/ found;
 - pipeline/calibration/predictions.py: a simulation 10 % above the law in every cycle, with
   c1, c2, a and the KS test within their goals, reaches every goal; 50 % above misses the P goal
-  and a collapse far from the law misses c1 and c2.
+  and a collapse far from the law misses c1 and c2; the growth's shape at each threshold of the
+  sensitivity table (and at the analysis's own) is P(n)/P(1) over the law's L(n)/L(1).
 
 usage: test_yield_calibration.py   (from the repository root)
 """
@@ -152,7 +153,7 @@ def law(n):
 
 
 class Predictions(unittest.TestCase):
-    def run_case(self, factor, c1=50.0, c2=0.12, compactions=(0.63, 0.27, 0.18)):
+    def run_case(self, factor, c1=50.0, c2=0.12, compactions=(0.63, 0.27, 0.18), sensitivity=None):
         tmp = tempfile.mkdtemp()
         rows = []
         for n in range(1, 11):
@@ -160,8 +161,8 @@ class Predictions(unittest.TestCase):
                          "perimeter_P_sem": 1.0, "a_fit_mean": 3.6, "a_fit_sem": 0.3,
                          "a_univ_mean": 3.0, "ks_n_tested": 3, "ks_n_rejected": 1 if n % 2 else 2,
                          "single_triangle_fraction_mean": 0.1, "n_facets_mean": 300})
-        ens = {"cycles": rows, "stages": {}, "threshold_sensitivity": {}, "runs": [], "n_runs": 3,
-               "compaction": D, "seeds": [1, 2, 3],
+        ens = {"cycles": rows, "stages": {}, "threshold_sensitivity": sensitivity or {}, "runs": [],
+               "n_runs": 3, "compaction": D, "seeds": [1, 2, 3], "parameters": {"threshold": 0.318},
                "fits": {"perimeter_P": {"increments": {"C": 38.0, "sigma_C": 3.0, "n0": 2.5,
                                                         "sigma_n0": 0.5}}}}
         os.makedirs(os.path.join(tmp, "groups", "compaction-0.27"))
@@ -218,6 +219,32 @@ class Predictions(unittest.TestCase):
         self.assertEqual(goals["global c2"], "no")
         self.assertFalse(any(r["within_band"] for r in doc["P"]))
         self.assertIn("| 0 of 9 cycles (ratios 1.50-1.50; cycle 1, the calibration, 1.50) | no |", md)
+
+    def test_growth_shape_against_the_threshold(self):
+        # Counted at a lower threshold the runs grow as the law (P = 2 law), at a higher one not
+        # at all (P = 3 in every cycle); at the analysis's own (P = 1.5 law) as the law.
+        sens = {"factors_of_c0": [0.5, 1.0], "thresholds_mean": [0.2, 0.4],
+                "cycles": [{"cycle": n, "perimeter_P_mean": [2 * law(n), 3.0],
+                            "perimeter_P_sem": [0.0, 0.3]} for n in range(1, 11)]}
+        _, doc, md = self.run_case(1.5, sensitivity=sens)
+        rows = doc["threshold_shape"]
+        self.assertEqual([r["threshold"] for r in rows], [0.2, 0.318, 0.4])
+        self.assertEqual(rows[1]["role"], "the analysis's own")
+        for r in rows[:2]:
+            self.assertTrue(r["within_band"])
+            for c in r["cycles"]:
+                self.assertAlmostEqual(c["shape_ratio"], 1.0, places=9)
+        flat = rows[2]["cycles"]
+        self.assertFalse(rows[2]["within_band"])
+        self.assertAlmostEqual(flat[-1]["shape_ratio"], law(1) / law(10), places=9)
+        self.assertAlmostEqual(flat[-1]["sigma"], flat[-1]["shape_ratio"] * math.hypot(0.1, 0.1), places=9)
+        self.assertAlmostEqual(rows[0]["fold_angle_deg"], math.degrees(2 * math.asin(0.1)), places=9)
+        self.assertIn("| 0.200 (0.5 c0) |", md)
+        self.assertIn("**0.318 (the analysis's own)**", md)
+
+    def test_without_a_sensitivity_table_only_the_own_threshold(self):
+        _, doc, md = self.run_case(1.1)
+        self.assertEqual([r["role"] for r in doc["threshold_shape"]], ["the analysis's own"])
 
 
 if __name__ == "__main__":
