@@ -94,12 +94,22 @@ def convergence_section(add, doc):
     lines = []
     for name, v in pre.items():
         n = v.get("coarsest_nodes")
-        lines.append(f"`{name}` (P within {100 * v['tolerance']:g} % of the estimate in every "
-                     "cycle): " + (f"{n} nodes" if n else "no rung of this ladder"))
+        text = (f"`{name}` (P within {100 * v['tolerance']:g} % of the estimate in every "
+                "cycle): " + (f"{n} nodes at face value" if n else "no rung of this ladder"))
+        if n and "coarsest_nodes_shown" in v:
+            shown = v["coarsest_nodes_shown"]
+            text += (f", shown within the seeds' errors at {shown} nodes" if shown == n else
+                     f", shown within the seeds' errors (error + 2 s.e.m.) only from {shown} nodes"
+                     if shown else ", but no rung is shown within it by the seeds' errors")
+        lines.append(text)
     if lines:
+        bounds = doc.get("error_bound_2sem") or {}
+        bound = "; ".join(f"{n} nodes {100 * b:.0f} %" for n, b in bounds.items() if b is not None)
         add("**Presets from the ladder.** " + "; ".join(lines) + ". The estimate is only as good "
             "as the finest rungs: where the order is assumed or the finest step is marked "
-            "*noise*, the rungs' errors are less certain than their quoted s.e.m.\n")
+            "*noise*, the rungs' errors are less certain than their quoted s.e.m."
+            + (f" Largest |error| + 2 s.e.m. of P over the cycles: {bound}." if bound else "")
+            + "\n")
 
 
 def main():

@@ -17,7 +17,9 @@ s.e.m. the row says the difference is not resolved by the seeds (the extrapolati
 mostly noise).
 
 Writes RESULTS/convergence.json and RESULTS/convergence.csv, and names the coarsest rung whose P
-per cycle is within 15 % and within 5 % of its estimate in every cycle (the presets' rule).
+per cycle is within 15 % and within 5 % of its estimate in every cycle (the presets' rule): at
+face value, and shown, where the error and twice its s.e.m. together stay within the tolerance
+(a ladder whose seeds cannot tell the tolerance from zero shows no rung, whatever its means say).
 
 usage: convergence.py --points runs/sweeps/NAME/points.json --results results/NAME
 """
@@ -157,15 +159,26 @@ def table(points, results):
     return rungs, rows
 
 
-def coarsest_within(rows, rungs, key, tol):
-    """The coarsest rung whose `key` is within tol of its estimate in every cycle, or None."""
+def coarsest_within(rows, rungs, key, tol, margin=0.0):
+    """The coarsest rung whose `key` is within tol of its estimate in every cycle, or None; with
+    margin k, |error| + k s.e.m. of the error must be (k = 2: shown within the seeds' errors)."""
     mine = [r for r in rows if r["quantity"] == key and r.get("estimate") is not None]
     if not mine:
         return None
     for i, rung in enumerate(rungs):
-        if all(abs(r["rungs"][i]["rel_error"]) <= tol for r in mine):
+        if all(abs(r["rungs"][i]["rel_error"]) + margin * (r["rungs"][i]["rel_error_sem"] or 0.0)
+               <= tol for r in mine):
             return rung["nodes"]
     return None
+
+
+def largest_error_bound(rows, rungs, key, nodes):
+    """Over the cycles, the largest |error| + 2 s.e.m. of the rung with `nodes` (None: no
+    estimate): how close to the estimate the seeds show that rung to be."""
+    i = [r["nodes"] for r in rungs].index(nodes)
+    b = [abs(r["rungs"][i]["rel_error"]) + 2 * (r["rungs"][i]["rel_error_sem"] or 0.0)
+         for r in rows if r["quantity"] == key and r.get("estimate") is not None]
+    return max(b) if b else None
 
 
 def main():
@@ -183,8 +196,12 @@ def main():
            "rungs": [{k: r[k] for k in ("group", "nodes", "h_m")} | {"runs": r["ensemble"]["n_runs"],
                      "seeds": r["ensemble"]["seeds"]} for r in rungs],
            "presets": {name: {"tolerance": tol,
-                              "coarsest_nodes": coarsest_within(rows, rungs, "perimeter_P", tol)}
+                              "coarsest_nodes": coarsest_within(rows, rungs, "perimeter_P", tol),
+                              "coarsest_nodes_shown": coarsest_within(rows, rungs, "perimeter_P",
+                                                                      tol, margin=2.0)}
                        for name, tol in PRESET_TOLERANCES.items()},
+           "error_bound_2sem": {str(r["nodes"]): largest_error_bound(rows, rungs, "perimeter_P",
+                                                                     r["nodes"]) for r in rungs},
            "rows": rows}
     os.makedirs(a.results, exist_ok=True)
     out = os.path.join(a.results, "convergence.json")

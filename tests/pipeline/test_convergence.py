@@ -3,7 +3,7 @@
 exactly: it recovers the order and the converged value (second and first order, rising and
 falling), falls back to an assumed first order on two rungs or a non-monotone ladder and says
 so, marks a finest step within the seeds' noise, picks the presets' coarsest rungs by their
-tolerance, propagates the s.e.m., and the sweep report and figure read its output.
+tolerance at face value and as shown by the seeds' errors, propagates the s.e.m., and the sweep report and figure read its output.
 
 usage: test_convergence.py   (from the repository root)
 """
@@ -111,6 +111,20 @@ class Convergence(unittest.TestCase):
             self.assertAlmostEqual(row["estimate"], 100, delta=1.5)
             self.assertEqual(doc["presets"]["quick"]["coarsest_nodes"], 3000)
             self.assertEqual(doc["presets"]["paper"]["coarsest_nodes"], 6000)
+            # With s.e.m. 0.5 the 3000-node rung's 10 % is shown within 15 %.
+            self.assertEqual(doc["presets"]["quick"]["coarsest_nodes_shown"], 3000)
+            self.assertLess(doc["error_bound_2sem"]["3000"], 0.15)
+        with tempfile.TemporaryDirectory() as tmp:
+            # The same means with s.e.m. 3 (as three seeds give): the rungs' 10 % and 3 % are no
+            # longer shown within 15 % and 5 %, though at face value they are.
+            ladder(tmp, {1500: [130] * 2, 3000: [110] * 2, 6000: [103] * 2, 12000: [101] * 2},
+                   sem=3.0)
+            doc = run(tmp)
+            self.assertEqual(doc["presets"]["quick"]["coarsest_nodes"], 3000)
+            self.assertEqual(doc["presets"]["paper"]["coarsest_nodes"], 6000)
+            self.assertNotEqual(doc["presets"]["quick"]["coarsest_nodes_shown"], 3000)
+            self.assertIsNone(doc["presets"]["paper"]["coarsest_nodes_shown"])
+            self.assertGreater(doc["error_bound_2sem"]["3000"], 0.15)
         with tempfile.TemporaryDirectory() as tmp:
             ladder(tmp, {3000: [100] * 2, 6000: [100.5] * 2}, sem=1.0)
             self.assertFalse(self.rows(run(tmp))[0]["finest_step_resolved"])
@@ -170,6 +184,8 @@ class Convergence(unittest.TestCase):
             self.assertIn("| 1 | ", text)
             self.assertIn("estimate", text)
             self.assertIn("`quick`", text)
+            self.assertIn("nodes at face value", text)
+            self.assertIn("Largest |error| + 2 s.e.m. of P over the cycles: 1500 nodes", text)
             for q in ("P (facet perimeters)", "facet count", "dangling crease share"):
                 self.assertIn(q, text)
 
