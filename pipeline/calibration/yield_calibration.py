@@ -68,7 +68,8 @@ def yield_rows(points, groups_dir, key):
         rows.append({"group": group, "value": value, "c0": hinge_c0(key, value),
                      "compaction": e["compaction"], "n_runs": e["n_runs"],
                      "P_mean": c1["perimeter_P_mean"], "P_sem": c1["perimeter_P_sem"],
-                     "l_mean": c1["crease_length_L0_mean"], "l_sem": c1["crease_length_L0_sem"]})
+                     "l_mean": c1["crease_length_L0_mean"], "l_sem": c1["crease_length_L0_sem"],
+                     "threshold": e.get("parameters", {}).get("threshold")})
     rows.sort(key=lambda r: r["value"])
     return rows
 
@@ -133,7 +134,7 @@ def rounded(key, value):
     return round(value, 1 if key == "material.yield_angle" else 2)
 
 
-def write_outputs(out, key, rows, target, law, result, fit, fig_path, fig_fmt):
+def write_outputs(out, key, rows, target, law, result, fit, fig_path, fig_fmt, why=None):
     kind = KINDS[key]
     u, name = kind["unit"], kind["name"]
     os.makedirs(out, exist_ok=True)
@@ -143,6 +144,8 @@ def write_outputs(out, key, rows, target, law, result, fit, fig_path, fig_fmt):
            "rows": rows, "interpolation": result, "line_fit": fit,
            "method": "linear interpolation of ln P between the bracketing values; s.e.m. of "
                      "ln P at both ends carried through in quadrature"}
+    if not result:
+        doc["not_calibrated"] = why
     if result:
         v = rounded(key, result["value"])
         doc["calibrated"] = {"key": key, "value": v, "unit": u,
@@ -164,8 +167,13 @@ def write_outputs(out, key, rows, target, law, result, fit, fig_path, fig_fmt):
              f"mean perimeter measure P after the first cycle at compaction {law['D']} equals the "
              f"experiments' law, {law['c1']:g} (1 - {law['D']}) ln(1 + {law['c2']:g}/{law['D']}) = "
              f"{target:.2f} L0 (data/crease_length_law_constants.csv). Everything else the "
-             "simulation predicts.", "",
-             f"| {name} ({u}) | runs | P after cycle 1 (L0) | ℓ after cycle 1 (L0) |",
+             "simulation predicts."]
+    thresholds = {round(r["threshold"], 9) for r in rows if r.get("threshold") is not None}
+    if len(thresholds) == 1:
+        t = thresholds.pop()
+        lines[-1] += (f" Creases are hinges with |p| > {t:.4g}, a permanent fold of more than "
+                      f"{math.degrees(2 * math.asin(min(1.0, t / 2))):.1f} degrees, at every value.")
+    lines += ["", f"| {name} ({u}) | runs | P after cycle 1 (L0) | ℓ after cycle 1 (L0) |",
              "| --- | --- | --- | --- |"]
     for r in rows:
         lines.append(f"| {r['value']:g} | {r['n_runs']} | {r['P_mean']:.2f} ± "
@@ -182,6 +190,8 @@ def write_outputs(out, key, rows, target, law, result, fit, fig_path, fig_fmt):
             lines.append(f"A weighted straight line through all values, ln P = {fit['A']:.3f} "
                          f"{fit['B']:+.4f} x (χ² = {fit['chi2']:.1f} for {fit['dof']} degrees "
                          f"of freedom), gives {fit['value']:.2f} {u}.")
+    else:
+        lines.append(f"**Not calibrated:** {why}.")
     lines += ["", f"![P after cycle 1 against the {name}](calibration.{fig_fmt})", ""]
     with open(os.path.join(out, "CALIBRATION.md"), "w") as f:
         f.write("\n".join(lines))
@@ -245,7 +255,7 @@ def main():
     target = law["cycles"][0]["law"]
     result, why = interpolate(rows, target, KINDS[key])
     fit = line_fit(rows, target)
-    write_outputs(a.out, key, rows, target, law, result, fit, a.output, a.format)
+    write_outputs(a.out, key, rows, target, law, result, fit, a.output, a.format, why)
     if result is None:
         print(f"yield_calibration: {why}", file=sys.stderr)
         sys.exit(3)

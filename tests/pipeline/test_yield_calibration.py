@@ -33,7 +33,8 @@ def ensemble(p_mean, p_sem, compaction=D):
     row = {"cycle": 1, "compaction": compaction, "perimeter_P_mean": p_mean, "perimeter_P_sem": p_sem,
            "crease_length_L0_mean": 1.5 * p_mean, "crease_length_L0_sem": p_sem}
     return {"cycles": [row], "fits": {}, "stages": {}, "threshold_sensitivity": {}, "runs": [],
-            "n_runs": 3, "compaction": compaction}
+            "n_runs": 3, "compaction": compaction,
+            "parameters": {"threshold": 2 * math.sin(math.radians(18.3) / 2)}}
 
 
 class YieldCalibration(unittest.TestCase):
@@ -82,7 +83,9 @@ class YieldCalibration(unittest.TestCase):
         for f in ("calibration.csv", "CALIBRATION.md", "calibration.svg"):
             self.assertTrue(os.path.isfile(os.path.join(out, f)), f)
         with open(os.path.join(out, "CALIBRATION.md")) as f:
-            self.assertIn(f"{exact:.2f} ± ", f.read())
+            md = f.read()
+        self.assertIn(f"{exact:.2f} ± ", md)
+        self.assertIn("a permanent fold of more than 18.3 degrees, at every value", md)
         # make study-figures redraws the figure from the kept JSON alone.
         r = subprocess.run([sys.executable, SCRIPT, "--replot", os.path.join(out, "calibration.json"),
                             "-o", os.path.join(out, "again.svg")], capture_output=True, text=True)
@@ -90,10 +93,14 @@ class YieldCalibration(unittest.TestCase):
         self.assertTrue(os.path.isfile(os.path.join(out, "again.svg")))
 
     def test_target_outside_the_bracket_says_which_way(self):
-        code, err, doc, _ = self.run_case({30.0: ensemble(40, 2), 34.0: ensemble(30, 2)})
+        code, err, doc, out = self.run_case({30.0: ensemble(40, 2), 34.0: ensemble(30, 2)})
         self.assertEqual(code, 3)
         self.assertIn("to 34 degrees: add larger values", err)
         self.assertIsNone(doc["interpolation"])
+        self.assertNotIn("calibrated", doc)
+        self.assertIn("add larger values", doc["not_calibrated"])
+        with open(os.path.join(out, "CALIBRATION.md")) as f:
+            self.assertIn("**Not calibrated:** P after cycle 1 is above the target", f.read())
         code, err, _, _ = self.run_case({30.0: ensemble(5, 1), 34.0: ensemble(3, 1)})
         self.assertEqual(code, 3)
         self.assertIn("to 30 degrees: add smaller values", err)
