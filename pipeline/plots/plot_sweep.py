@@ -107,7 +107,7 @@ def convergence(results, out):
         ax.errorbar(h, m, yerr=s, fmt="o-", ms=4, capsize=3, color=colour,
                     label=f"cycle {r['cycle']}")
         if r.get("estimate") is not None:
-            ax.errorbar([0], [r["estimate"]], yerr=[r["estimate_sem"]], fmt="s", mfc="none",
+            ax.errorbar([0], [r["estimate"]], yerr=[r["estimate_sem"] or 0], fmt="s", mfc="none",
                         ms=6, capsize=3, color=colour)
             ax.plot([0, h[-1]], [r["estimate"], m[-1]], ":", color=colour, lw=1)
             nodes = [g["nodes"] for g in r["rungs"]]

@@ -10,6 +10,7 @@ usage: make_sweep_report.py --points runs/sweeps/NAME/points.json --results resu
                             -o results/NAME/REPORT.md
 """
 import argparse
+import math
 import os
 import sys
 
@@ -80,7 +81,7 @@ def convergence_section(add, doc):
         for row in (x for x in doc["rows"] if x["quantity"] == q):
             cells = [f"{pm(g['mean'], g['sem'])}<br>{pct(g['rel_error'])}" for g in row["rungs"]]
             est = (pm(row["estimate"], row["estimate_sem"])
-                   + ("" if row.get("finest_step_resolved", True) else " *noise*")
+                   + {True: "", False: " *noise*", None: " (no s.e.m.)"}[row.get("finest_step_resolved", True)]
                    if row.get("estimate") is not None else
                    "– (extrapolates out of range)" if "leaves the quantity's range" in row["method"]
                    else "– (no convergence seen)" if row["method"].startswith("no convergence")
@@ -105,11 +106,27 @@ def convergence_section(add, doc):
     if lines:
         bounds = doc.get("error_bound_2sem") or {}
         bound = "; ".join(f"{n} nodes {100 * b:.0f} %" for n, b in bounds.items() if b is not None)
+        runs = [r.get("runs") for r in doc.get("rungs", []) if r.get("runs")]
+        cover = ""
+        if runs and min(runs) >= 2:
+            cover = (f" With {min(runs)} seeds per rung, ±2 s.e.m. covers about "
+                     f"{100 * t_coverage(2.0, min(runs) - 1):.0f} % of the spread of a mean "
+                     f"(Student's t, {min(runs) - 1} degrees of freedom), not 95 %.")
         add("**Presets from the ladder.** " + "; ".join(lines) + ". The estimate is only as good "
             "as the finest rungs: where the order is assumed or the finest step is marked "
             "*noise*, the rungs' errors are less certain than their quoted s.e.m."
             + (f" Largest |error| + 2 s.e.m. of P over the cycles: {bound}." if bound else "")
-            + "\n")
+            + cover + "\n")
+
+
+def t_coverage(k, nu, steps=2000):
+    """P(|T| < k) for Student's t with nu degrees of freedom (Simpson's rule on its density):
+    how much a band of k s.e.m. from nu + 1 seeds covers."""
+    c = math.exp(math.lgamma((nu + 1) / 2) - math.lgamma(nu / 2)) / math.sqrt(nu * math.pi)
+    f = [c * (1 + (k * i / steps) ** 2 / nu) ** (-(nu + 1) / 2) for i in range(steps + 1)]
+    h = k / steps
+    simpson = h / 3 * (f[0] + f[-1] + 4 * sum(f[1:-1:2]) + 2 * sum(f[2:-1:2]))
+    return 2 * simpson
 
 
 def main():
@@ -128,8 +145,16 @@ def main():
     c1_exp, c2_exp = law_constants()
     groups = sweep_groups(pts)
     ens = {g: load_ensemble(os.path.join(a.results, "groups", g, "ensemble.json")) for g in groups}
-    first = load_json(os.path.join(pts["points"][0]["analysis"], "stats.json"), "stats.json")
-    meta = first.get("input", {}).get("meta", {})
+    # Every program version and revision the runs record, with how many runs each (a sweep
+    # resumed or extended after a commit mixes builds; the report says so rather than name one).
+    builds = {}
+    for p in pts["points"]:
+        st = load_json(os.path.join(p["analysis"], "stats.json"), "stats.json")
+        meta = st.get("input", {}).get("meta", {})
+        b = f"{meta.get('program_version', '?')} ({meta.get('git_revision', '?')})"
+        builds[b] = builds.get(b, 0) + 1
+    program = ("program " + next(iter(builds)) if len(builds) == 1 else
+               "programs " + "; ".join(f"{b} for {n} runs" for b, n in builds.items()))
 
     L = []
     add = L.append
@@ -144,8 +169,7 @@ def main():
     for g in pts["grid"]:
         add(f"- grid: `{g['key']}` ∈ {{{', '.join(g['values'])}}}")
     add(f"- seeds: {', '.join(str(s) for s in pts['seeds'])}; {len(pts['points'])} runs in "
-        f"{len(groups)} groups; program {meta.get('program_version', '?')} "
-        f"({meta.get('git_revision', '?')})")
+        f"{len(groups)} groups; {program}")
     rest = [s for s in pts.get("sweep_seeds", pts["seeds"]) if s not in pts["seeds"]]
     if rest:
         add(f"- **part of the sweep**: seeds {', '.join(rest)} of the sweep file are not run yet "

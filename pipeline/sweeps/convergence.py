@@ -11,15 +11,18 @@ it is accepted when the differences keep their sign and 0.5 <= p <= 4, and the e
 Q* = Q3 + (Q3 - Q2) / ((h2/h3)^p - 1) from the finest two. When the step between the finest
 rungs is no smaller than the one before (same sign), nothing converges yet and there is no
 estimate. Otherwise (two rungs, or a non-monotone or out-of-range order) p = 1 is assumed and
-the row says so; with a single rung there is no estimate. Q*'s error propagates the finest two s.e.m.; a rung's relative error is
-(Q - Q*) / Q*. Where the change between the finest two rungs is within twice their combined
-s.e.m. the row says the difference is not resolved by the seeds (the extrapolation is then
-mostly noise).
+the row says so; with a single rung there is no estimate. Q*'s error propagates the finest two
+s.e.m.; a rung's relative error is (Q - Q*) / Q*, its s.e.m. that of the finest two rungs' step
+for those two (Q* is made from them) and the rung's and Q*'s together for any other. Where the
+change between the finest two rungs is within twice their combined s.e.m. the row says the
+difference is not resolved by the seeds (the extrapolation is then mostly noise).
 
-Writes RESULTS/convergence.json and RESULTS/convergence.csv, and names the coarsest rung whose P
-per cycle is within 15 % and within 5 % of its estimate in every cycle (the presets' rule): at
-face value, and shown, where the error and twice its s.e.m. together stay within the tolerance
-(a ladder whose seeds cannot tell the tolerance from zero shows no rung, whatever its means say).
+Writes RESULTS/convergence.json and RESULTS/convergence.csv, and names the coarsest rung from
+which on P per cycle is within 15 % and within 5 % of its estimate in every cycle and at every
+finer rung (the presets' rule): at face value, and shown, where the error and twice its s.e.m.
+together stay within the tolerance (a ladder whose seeds cannot tell the tolerance from zero,
+or that has no s.e.m., shows no rung, whatever its means say). Both trust the model Q* + C h^p:
+an assumed order, or a step marked as noise, makes every error less certain than quoted.
 
 usage: convergence.py --points runs/sweeps/NAME/points.json --results results/NAME
 """
@@ -97,11 +100,36 @@ def extrapolate(rungs):
     (h2, q2, s2), (h3, q3_, s3) = rungs[-2], rungs[-1]
     k = 1.0 / ((h2 / h3) ** p - 1.0)
     est = q3_ + k * (q3_ - q2)
-    est_sem = math.hypot((1 + k) * (s3 or 0.0), k * (s2 or 0.0))
+    # Without the finest two rungs' s.e.m. (a single seed) the estimate's error and whether
+    # the seeds resolve the step are unknown, not zero.
+    known = s2 is not None and s3 is not None
+    est_sem = math.hypot((1 + k) * s3, k * s2) if known else None
     step = abs(q3_ - q2)
-    resolved = step > 2 * math.hypot(s2 or 0.0, s3 or 0.0)
+    resolved = step > 2 * math.hypot(s2, s3) if known else None
     return {"estimate": est, "estimate_sem": est_sem, "order": p, "method": method,
-            "finest_step_resolved": resolved}
+            "finest_step_resolved": resolved, "extrapolation_k": k,
+            "finest_h": [h2, h3]}
+
+
+def rel_error_sem(h, m, s, est, rungs_sem):
+    """The s.e.m. of (m - Q*) / Q* at the rung of spacing h. Q* = (1 + k) Q3 - k Q2 is built
+    from the finest two rungs, so their own errors against it are -k (Q3 - Q2) and
+    (1 + k) (Q2 - Q3): these carry only the two rungs' s.e.m. (treating Q* as independent of
+    them would count each twice). Any coarser rung is independent of Q*. None where an s.e.m.
+    is missing. The error of the denominator Q* is left out (first order)."""
+    e = est["estimate"]
+    if s is None or est.get("estimate_sem") is None:
+        return None
+    h2, h3 = est["finest_h"]
+    k = est["extrapolation_k"]
+    s2, s3 = rungs_sem[h2], rungs_sem[h3]
+    if h == h3:
+        num = k * math.hypot(s2, s3)
+    elif h == h2:
+        num = (1 + k) * math.hypot(s2, s3)
+    else:
+        num = math.hypot(s, est["estimate_sem"])
+    return num / abs(e)
 
 
 def within_range(est, unit):
@@ -146,11 +174,11 @@ def table(points, results):
             est = extrapolate([(h, m, s) for h, m, s, _ in vals])
             est = within_range(est, unit)
             per_rung = []
+            sems = {h: s for h, m, s, _ in vals}
             for r, (h, m, s, n) in zip(rungs, vals):
                 e = est.get("estimate")
                 rel = (m - e) / e if (e and m is not None) else None
-                rel_sem = (math.hypot(s or 0.0, abs(m / e) * est["estimate_sem"]) / abs(e)
-                           if rel is not None else None)
+                rel_sem = rel_error_sem(h, m, s, est, sems) if rel is not None else None
                 per_rung.append({"nodes": r["nodes"], "h_m": h, "runs": n, "mean": m, "sem": s,
                                  "rel_error": rel, "rel_error_sem": rel_sem})
             rows.append({"quantity": key, "label": label, "unit": unit,
@@ -159,26 +187,40 @@ def table(points, results):
     return rungs, rows
 
 
+def error_bound(rung, margin):
+    """|error| + margin s.e.m. of one rung's row, None when either is unknown (a rung without a
+    mean, or without an s.e.m. where one is asked for): unknown is not within any tolerance."""
+    rel, sem = rung["rel_error"], rung["rel_error_sem"]
+    if rel is None or (margin and sem is None):
+        return None
+    return abs(rel) + (margin * sem if margin else 0.0)
+
+
 def coarsest_within(rows, rungs, key, tol, margin=0.0):
-    """The coarsest rung whose `key` is within tol of its estimate in every cycle, or None; with
-    margin k, |error| + k s.e.m. of the error must be (k = 2: shown within the seeds' errors)."""
+    """The coarsest rung from which on every rung's `key` is within tol of its estimate in every
+    cycle (a rung within it while a finer one is not is a crossing, not convergence), or None;
+    with margin k, |error| + k s.e.m. of the error must be (k = 2: shown within the seeds'
+    errors)."""
     mine = [r for r in rows if r["quantity"] == key and r.get("estimate") is not None]
     if not mine:
         return None
+
+    def ok(i):
+        return all((b := error_bound(r["rungs"][i], margin)) is not None and b <= tol for r in mine)
     for i, rung in enumerate(rungs):
-        if all(abs(r["rungs"][i]["rel_error"]) + margin * (r["rungs"][i]["rel_error_sem"] or 0.0)
-               <= tol for r in mine):
+        if all(ok(j) for j in range(i, len(rungs))):
             return rung["nodes"]
     return None
 
 
 def largest_error_bound(rows, rungs, key, nodes):
-    """Over the cycles, the largest |error| + 2 s.e.m. of the rung with `nodes` (None: no
-    estimate): how close to the estimate the seeds show that rung to be."""
+    """Over the cycles, the largest |error| + 2 s.e.m. of the rung with `nodes`: how close to
+    the estimate the seeds show that rung to be. None when no cycle has an estimate or any
+    cycle's bound is unknown."""
     i = [r["nodes"] for r in rungs].index(nodes)
-    b = [abs(r["rungs"][i]["rel_error"]) + 2 * (r["rungs"][i]["rel_error_sem"] or 0.0)
+    b = [error_bound(r["rungs"][i], 2.0)
          for r in rows if r["quantity"] == key and r.get("estimate") is not None]
-    return max(b) if b else None
+    return max(b) if b and None not in b else None
 
 
 def main():

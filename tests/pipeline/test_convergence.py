@@ -3,7 +3,9 @@
 exactly: it recovers the order and the converged value (second and first order, rising and
 falling), falls back to an assumed first order on two rungs or a non-monotone ladder and says
 so, marks a finest step within the seeds' noise, picks the presets' coarsest rungs by their
-tolerance at face value and as shown by the seeds' errors, propagates the s.e.m., and the sweep report and figure read its output.
+tolerance at face value (the coarsest rung from which on all are within it) and as shown by the
+seeds' errors (none without an s.e.m.), propagates the s.e.m. (the finest two rungs correlated
+with the estimate), and the sweep report and figure read its output.
 
 usage: test_convergence.py   (from the repository root)
 """
@@ -58,6 +60,16 @@ def run(tmp):
         raise AssertionError(r.stderr)
     with open(os.path.join(tmp, "convergence.json")) as f:
         return json.load(f)
+
+
+def section(doc):
+    """The sweep report's convergence section for a convergence.json document."""
+    sys.path.insert(0, os.path.join(REPO, "pipeline", "report"))
+    sys.path.insert(0, os.path.join(REPO, "pipeline", "plots"))
+    from make_sweep_report import convergence_section
+    lines = []
+    convergence_section(lines.append, doc)
+    return "\n".join(lines)
 
 
 def exact(nodes, q_star, c, p):
@@ -116,15 +128,55 @@ class Convergence(unittest.TestCase):
             self.assertLess(doc["error_bound_2sem"]["3000"], 0.15)
         with tempfile.TemporaryDirectory() as tmp:
             # The same means with s.e.m. 3 (as three seeds give): the rungs' 10 % and 3 % are no
-            # longer shown within 15 % and 5 %, though at face value they are.
+            # longer shown within 15 % and 5 %, though at face value they are; the next finer
+            # rungs are. The finest rung's error against an estimate made from it and the rung
+            # before is -k (Q3 - Q2), so its s.e.m. is k hypot(s2, s3) / Q*, not the rung's and
+            # the estimate's s.e.m. added as if independent.
             ladder(tmp, {1500: [130] * 2, 3000: [110] * 2, 6000: [103] * 2, 12000: [101] * 2},
                    sem=3.0)
             doc = run(tmp)
             self.assertEqual(doc["presets"]["quick"]["coarsest_nodes"], 3000)
             self.assertEqual(doc["presets"]["paper"]["coarsest_nodes"], 6000)
-            self.assertNotEqual(doc["presets"]["quick"]["coarsest_nodes_shown"], 3000)
-            self.assertIsNone(doc["presets"]["paper"]["coarsest_nodes_shown"])
+            self.assertEqual(doc["presets"]["quick"]["coarsest_nodes_shown"], 6000)
+            self.assertEqual(doc["presets"]["paper"]["coarsest_nodes_shown"], 12000)
             self.assertGreater(doc["error_bound_2sem"]["3000"], 0.15)
+            row = self.rows(doc)[0]
+            k, est = row["extrapolation_k"], row["estimate"]
+            self.assertAlmostEqual(row["rungs"][3]["rel_error_sem"], k * math.hypot(3, 3) / est, places=12)
+            self.assertAlmostEqual(row["rungs"][2]["rel_error_sem"], (1 + k) * math.hypot(3, 3) / est,
+                                   places=12)
+            self.assertAlmostEqual(row["rungs"][0]["rel_error_sem"],
+                                   math.hypot(3, row["estimate_sem"]) / est, places=12)
+        with tempfile.TemporaryDirectory() as tmp:
+            # A coarse rung that crosses the estimate (1500 nodes on it, Q* = 98 from the finest
+            # three at order 2) while the finer 3000 and 6000 are 12 % and 6 % off is not where
+            # the ladder has converged: the face-value rung is the coarsest from which on every
+            # rung is within the tolerance.
+            ladder(tmp, {1500: [98] * 2, 3000: [110] * 2, 6000: [104] * 2, 12000: [101] * 2})
+            doc = run(tmp)
+            row = self.rows(doc)[0]
+            self.assertAlmostEqual(row["estimate"], 98, places=6)
+            self.assertLess(abs(row["rungs"][0]["rel_error"]), 0.05)
+            self.assertGreater(abs(row["rungs"][2]["rel_error"]), 0.05)
+            self.assertEqual(doc["presets"]["paper"]["coarsest_nodes"], 12000)
+            self.assertEqual(doc["presets"]["quick"]["coarsest_nodes"], 1500)
+        with tempfile.TemporaryDirectory() as tmp:
+            # One seed per rung: no s.e.m., so nothing is shown and the step's noise is unknown,
+            # not zero; the face value stands.
+            ladder(tmp, {3000: [104] * 2, 6000: [102] * 2}, sem=None)
+            doc = run(tmp)
+            row = self.rows(doc)[0]
+            self.assertIsNone(row["estimate_sem"])
+            self.assertIsNone(row["finest_step_resolved"])
+            self.assertEqual(doc["presets"]["quick"]["coarsest_nodes"], 3000)
+            self.assertIsNone(doc["presets"]["quick"]["coarsest_nodes_shown"])
+            self.assertIsNone(doc["error_bound_2sem"]["3000"])
+            r = subprocess.run([sys.executable, os.path.join(REPO, "pipeline", "plots", "plot_sweep.py"),
+                                "--results", tmp, "--convergence-only"], capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            text = section(doc)
+            self.assertIn("(no s.e.m.)", text)
+            self.assertIn("3000 nodes at face value, but no rung is shown", text)
         with tempfile.TemporaryDirectory() as tmp:
             ladder(tmp, {3000: [100] * 2, 6000: [100.5] * 2}, sem=1.0)
             self.assertFalse(self.rows(run(tmp))[0]["finest_step_resolved"])
@@ -174,18 +226,20 @@ class Convergence(unittest.TestCase):
                                capture_output=True, text=True)
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertGreater(os.path.getsize(os.path.join(tmp, "convergence.png")), 1000)
-            sys.path.insert(0, os.path.join(REPO, "pipeline", "report"))
-            sys.path.insert(0, os.path.join(REPO, "pipeline", "plots"))
-            from make_sweep_report import convergence_section
-            lines = []
             with open(os.path.join(tmp, "convergence.json")) as f:
-                convergence_section(lines.append, json.load(f))
-            text = "\n".join(lines)
+                text = section(json.load(f))
             self.assertIn("| 1 | ", text)
             self.assertIn("estimate", text)
             self.assertIn("`quick`", text)
             self.assertIn("nodes at face value", text)
             self.assertIn("Largest |error| + 2 s.e.m. of P over the cycles: 1500 nodes", text)
+            # Three seeds per rung: ±2 s.e.m. is a Student's t band with 2 degrees of freedom,
+            # P(|T| < 2) = 2 / sqrt(6) = 82 %.
+            self.assertIn("With 3 seeds per rung, ±2 s.e.m. covers about 82 %", text)
+            from make_sweep_report import t_coverage
+            self.assertAlmostEqual(t_coverage(2.0, 2), 2 / math.sqrt(6), places=9)
+            self.assertAlmostEqual(t_coverage(2.0, 1), 2 / math.pi * math.atan(2), places=9)
+            self.assertAlmostEqual(t_coverage(1.959964, 10 ** 6), 0.95, places=4)
             for q in ("P (facet perimeters)", "facet count", "dangling crease share"):
                 self.assertIn(q, text)
 
