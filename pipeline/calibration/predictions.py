@@ -15,9 +15,9 @@ from the compaction sweep (pipeline/sweeps/compaction.yaml) at that calibrated m
    the fragmentation model's universal curve at the same mean area, a_univ: within 30 % (the
    goal); and the Kolmogorov-Smirnov test of phi(xi; a_fit) per run at 5 % (the family's shape): a cycle counts as
    not rejecting when fewer than half its runs reject (the goal: at least half the cycles).
-5. How the growth's shape depends on the crease threshold, a convention of the analysis: the same
-   runs counted at the thresholds of their sensitivity table (F c0), each as P(n)/P(1) against
-   the law's L(n)/L(1). Not a prediction (a threshold other than the protocol's would be
+5. (Section 4 of the report.) How the growth's shape depends on the crease threshold, a
+   convention of the analysis: the same runs counted at the thresholds of their sensitivity
+   table (F c0), each as P(n)/P(1) against the law's L(n)/L(1). Not a prediction (a threshold other than the protocol's would be
    calibrated to another yield, and other runs), but the size of what the convention can move.
 
 Writes OUT/PREDICTIONS.md, OUT/predictions.json and the figure (-o). Exit 0; 2 bad input.
@@ -72,43 +72,80 @@ def facet_rows(ens):
     return rows
 
 
-def shape_rows(ens, law, P):
-    """Section 5: per threshold of the ensemble's sensitivity table, and for the analysis's own
-    threshold (the P rows), P(n)/P(1) divided by the law's L(n)/L(1). Its error takes the two
-    s.e.m. as independent, an overestimate: P(n) and P(1) of one run are correlated."""
-    by_n = {c["cycle"]: c["law"] for c in law["cycles"]}
+def ratio_of_means(xs, ys):
+    """mean(ys) / mean(xs) over paired runs, and its standard error by the delta method with the
+    runs' covariance: P(n) and P(1) of one run are correlated (either way), so their s.e.m. do
+    not add as if independent. None for the error with fewer than two runs."""
+    n = len(xs)
+    mx, my = sum(xs) / n, sum(ys) / n
+    r = my / mx
+    if n < 2:
+        return r, None
+    vx = sum((x - mx) ** 2 for x in xs) / (n - 1)
+    vy = sum((y - my) ** 2 for y in ys) / (n - 1)
+    cov = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / (n - 1)
+    var = r * r * (vy / (my * my) + vx / (mx * mx) - 2 * cov / (mx * my)) / n if my > 0 else None
+    return r, (math.sqrt(max(var, 0.0)) if var is not None else None)
+
+
+def run_series(ens):
+    """Per threshold, each run's P per cycle: the ensemble's sensitivity thresholds (from each
+    run's table) and the analysis's own threshold (each run's cycles)."""
     ts = ens.get("threshold_sensitivity") or {}
     factors, thresholds = ts.get("factors_of_c0") or [], ts.get("thresholds_mean") or []
+    runs = ens.get("runs") or []
     series = []
     for k, t in enumerate(thresholds):
-        vals = {}
-        for c in ts.get("cycles", []):
-            m, e = c.get("perimeter_P_mean", []), c.get("perimeter_P_sem", [])
-            if k < len(m) and m[k] is not None:
-                vals[c["cycle"]] = (m[k], e[k] if k < len(e) and e[k] is not None else 0.0)
-        f = factors[k] if k < len(factors) else None
-        series.append({"factor_of_c0": f, "threshold": t, "role": "sensitivity", "P": vals})
+        per_run = []
+        for r in runs:
+            vals = {}
+            for c in (r.get("threshold_sensitivity") or {}).get("cycles", []):
+                ps = c.get("perimeter_P") or []
+                if k < len(ps) and ps[k] is not None:
+                    vals[c["cycle"]] = ps[k]
+            per_run.append(vals)
+        series.append({"factor_of_c0": factors[k] if k < len(factors) else None, "threshold": t,
+                       "role": "sensitivity", "runs": per_run})
     own = ens.get("parameters", {}).get("threshold")
     series.append({"factor_of_c0": None, "threshold": own, "role": "the analysis's own",
-                   "P": {r["cycle"]: (r["P_mean"], r["P_sem"]) for r in P}})
+                   "runs": [{c["cycle"]: c["perimeter_P"] for c in r.get("cycles", [])
+                             if c.get("perimeter_P") is not None} for r in runs]})
+    return series
+
+
+def shape_rows(ens, law):
+    """Section 4: per threshold of the ensemble's sensitivity table, and for the analysis's own
+    threshold, P(n)/P(1) divided by the law's L(n)/L(1), with P(n) and P(1) the means over the
+    runs that have both (P(1) > 0). Its error is that of a ratio of correlated means
+    (ratio_of_means). Rows without a cycle 1 and a later cycle are left out; the report says so."""
+    by_n = {c["cycle"]: c["law"] for c in law["cycles"]}
     rows = []
-    for s in series:
-        if s["threshold"] is None or 1 not in s["P"] or not s["P"][1][0] > 0 or len(s["P"]) < 2:
+    for s in run_series(ens):
+        runs = [v for v in s["runs"] if v.get(1, 0) > 0]
+        if s["threshold"] is None or not runs:
             continue
-        p1, e1 = s["P"][1]
+        p1s = [v[1] for v in runs]
         cyc = []
-        for n in sorted(s["P"]):
+        for n in sorted({n for v in runs for n in v}):
             if n == 1 or n not in by_n:
                 continue
-            pn, en = s["P"][n]
-            r = (pn / p1) / (by_n[n] / by_n[1])
-            cyc.append({"cycle": n, "shape_ratio": r,
-                        "sigma": r * math.hypot(en / pn if pn > 0 else 0.0, e1 / p1)})
+            pairs = [(v[1], v[n]) for v in runs if n in v]
+            r, sig = ratio_of_means([a for a, _ in pairs], [b for _, b in pairs])
+            law_ratio = by_n[n] / by_n[1]
+            cyc.append({"cycle": n, "shape_ratio": r / law_ratio,
+                        "sigma": sig / law_ratio if sig is not None else None,
+                        "n_runs": len(pairs),
+                        "per_run": [b / a / law_ratio for a, b in pairs]})
+        if not cyc:
+            continue
         t = s["threshold"]
+        m1 = sum(p1s) / len(p1s)
+        e1 = (math.sqrt(sum((x - m1) ** 2 for x in p1s) / (len(p1s) - 1) / len(p1s))
+              if len(p1s) > 1 else None)
         rows.append({"role": s["role"], "factor_of_c0": s["factor_of_c0"], "threshold": t,
                      "fold_angle_deg": math.degrees(2 * math.asin(min(1.0, t / 2))),
-                     "P1_mean": p1, "P1_sem": e1, "cycles": cyc,
-                     "within_band": bool(cyc) and all(abs(c["shape_ratio"] - 1) <= P_BAND for c in cyc)})
+                     "P1_mean": m1, "P1_sem": e1, "n_runs": len(runs), "cycles": cyc,
+                     "within_band": all(abs(c["shape_ratio"] - 1) <= P_BAND for c in cyc)})
     return sorted(rows, key=lambda r: r["threshold"])
 
 
@@ -174,28 +211,41 @@ def report(doc, fig_name):
     rows = doc.get("threshold_shape") or []
     L += ["## 4. The growth's shape against the crease threshold", ""]
     if not rows:
-        L += ["The ensemble has no threshold-sensitivity table: not tabulated.", ""]
+        L += ["No crease threshold of the runs has a cycle 1 with P > 0 and a later cycle (or the "
+              "ensemble has no per-run threshold-sensitivity table): not tabulated.", ""]
         return "\n".join(L)
     last = max(c["cycle"] for r in rows for c in r["cycles"])
     L += [f"A crease is a hinge whose permanent fold exceeds a threshold, a convention (the "
           f"experiments' curvature threshold is not published). The same runs counted at other "
-          f"thresholds give other shapes of growth: below, P(n)/P(1) of the simulation divided by "
-          f"L(n)/L(1) of the law (1 is the law's shape). Only the analysis's own threshold is "
-          f"calibrated (P(1) = the law's first cycle); at any other the yield would have to be "
-          f"calibrated again, on other runs, so these rows show how far the convention can move "
-          f"the growth, not predictions. Errors take P(n) and P(1) as independent (an "
-          f"overestimate).", "",
+          f"thresholds give other shapes of growth: below, P(n)/P(1) of the simulation (means over "
+          f"the seeds) divided by L(n)/L(1) of the law (1 is the law's shape). Only the analysis's "
+          f"own threshold is calibrated (P(1) = the law's first cycle); at any other the yield "
+          f"would have to be calibrated again, on other runs, so these rows show how far the "
+          f"convention can move the growth, not predictions. Errors are those of a ratio of means "
+          f"whose numerator and denominator are correlated across the seeds (delta method); with "
+          f"few seeds they are themselves uncertain. The last column gives each seed's own ratio.", "",
           f"| threshold | fold angle (deg) | P(1) (L0) | shape ratio, cycle 2 | cycle {last} | "
-          f"range over cycles 2-{last} | within ±20 % |", "| --- | --- | --- | --- | --- | --- | --- |"]
+          f"range over cycles 2-{last} | within ±20 % | cycle {last} per seed |",
+          "| --- | --- | --- | --- | --- | --- | --- | --- |"]
     for r in rows:
         by = {c["cycle"]: c for c in r["cycles"]}
-        name = (f"{r['threshold']:.3f} ({r['factor_of_c0']:g} c0)" if r["factor_of_c0"] is not None
-                else f"**{r['threshold']:.3f} ({r['role']})**")
-        cell = lambda n: (f"{by[n]['shape_ratio']:.2f} ± {by[n]['sigma']:.2f}" if n in by else "–")
+        t = f"{r['threshold']:.3f}" + (f" ({r['factor_of_c0']:g} c0)" if r["factor_of_c0"] is not None else "")
+        name = f"**{t} ({r['role']})**" if r["role"] != "sensitivity" else t
+
+        def cell(n):
+            if n not in by:
+                return "–"
+            c = by[n]
+            return f"{c['shape_ratio']:.2f}" + (f" ± {c['sigma']:.2f}" if c["sigma"] is not None else "")
         lo = min(c["shape_ratio"] for c in r["cycles"])
         hi = max(c["shape_ratio"] for c in r["cycles"])
-        L.append(f"| {name} | {r['fold_angle_deg']:.1f} | {r['P1_mean']:.2f} ± {r['P1_sem']:.2f} | "
-                 f"{cell(2)} | {cell(last)} | {lo:.2f}-{hi:.2f} | {yes(r['within_band'])} |")
+        seeds = ", ".join(f"{x:.2f}" for x in by[last]["per_run"]) if last in by else "–"
+        p1_sem = f"{r['P1_sem']:.2f}" if r["P1_sem"] is not None else "–"
+        L.append(f"| {name} | {r['fold_angle_deg']:.1f} | {r['P1_mean']:.2f} ± {p1_sem} | "
+                 f"{cell(2)} | {cell(last)} | {lo:.2f}-{hi:.2f} | {yes(r['within_band'])} | {seeds} |")
+    if not any(r["role"] != "sensitivity" for r in rows):
+        L.append("")
+        L.append("The analysis's own threshold has no cycle 1 with P > 0 and a later cycle: not tabulated.")
     L.append("")
     return "\n".join(L)
 
@@ -273,7 +323,7 @@ def main():
         gf = col["fits"]["perimeter_P"]["increments"]
         glob = {"compactions": sorted(col["compactions"]), **{k: gf[k] for k in
                 ("c1", "sigma_c1", "c2", "sigma_c2", "chi2", "dof", "at_bound")}}
-    shape = shape_rows(ens, law, P)
+    shape = shape_rows(ens, law)
     predicted = [r for r in P if r["role"] == "predicted"]
     goals = [
         {"goal": f"P(n) within ±20 % of the law, predicted cycles n = 2..{P[-1]['cycle']}",

@@ -16,7 +16,8 @@ linear across the bracket.
 
 Writes OUT/calibration.json, OUT/calibration.csv (P per value), OUT/CALIBRATION.md and
 OUT/calibration.png. Exit 0 done; 2 bad input; 3 the target is not bracketed (the message says
-which way to extend the grid) or P is not monotonic where it crosses the target.
+which way to extend the grid, or that P peaks or dips inside it) or P is not monotonic where it
+crosses the target.
 """
 import argparse
 import json
@@ -97,17 +98,25 @@ def interpolate(rows, target, kind):
         sigma = math.hypot((1 - t) * sa, t * sb) / abs(slope)
         return {"value": value, "sigma": sigma, "between": [a["value"], b["value"]],
                 "dlnP_dvalue": slope}, None
-    # Not bracketed: the overall trend says which end of the grid to extend.
-    rising = rows[-1]["P_mean"] > rows[0]["P_mean"]
-    if all(r["P_mean"] > target for r in rows):
-        end, way = (rows[0], "smaller") if rising else (rows[-1], "larger")
-        return None, (f"P after cycle 1 is above the target {target:.2f} L0 at every {kind['name']} "
-                      f"to {end['value']:g} {u}: add {way} values to the grid")
-    if all(r["P_mean"] < target for r in rows):
-        end, way = (rows[-1], "larger") if rising else (rows[0], "smaller")
-        return None, (f"P after cycle 1 is below the target {target:.2f} L0 at every {kind['name']} "
-                      f"to {end['value']:g} {u}: add {way} values to the grid")
-    return None, "no value brackets the target"  # not reached: above or below everywhere
+    # Not bracketed. Where P comes closest to the target at an end of the grid, extending the
+    # grid beyond that end may reach it; where it comes closest inside the grid (a peak below
+    # the target, a dip above it), P is not monotonic in the yield and extending is no answer.
+    above = all(r["P_mean"] > target for r in rows)
+    k = min(range(len(rows)), key=lambda i: abs(rows[i]["P_mean"] - target))
+    best = rows[k]
+    side = "above" if above else "below"
+    if 0 < k < len(rows) - 1:
+        turn = "a dip" if above else "a peak"
+        return None, (f"P after cycle 1 is {side} the target {target:.2f} L0 at every {kind['name']} "
+                      f"from {rows[0]['value']:g} to {rows[-1]['value']:g} {u}, with {turn} of "
+                      f"{best['P_mean']:.2f} ± {best['P_sem']:.2f} L0 ({best['P_mean'] / target:.2f} "
+                      f"of the target) at {best['value']:g} {u} inside the grid and "
+                      f"{rows[0]['P_mean']:.2f} and {rows[-1]['P_mean']:.2f} L0 at its ends: P is "
+                      f"not monotonic in the {kind['name']}, and no value of the grid reaches the "
+                      f"target")
+    way = "smaller" if k == 0 else "larger"
+    return None, (f"P after cycle 1 is {side} the target {target:.2f} L0 at every {kind['name']} "
+                  f"to {best['value']:g} {u}: add {way} values to the grid")
 
 
 def line_fit(rows, target):
@@ -146,7 +155,7 @@ def write_outputs(out, key, rows, target, law, result, fit, fig_path, fig_fmt, w
                      "ln P at both ends carried through in quadrature"}
     if not result:
         doc["not_calibrated"] = why
-    if result:
+    else:
         v = rounded(key, result["value"])
         doc["calibrated"] = {"key": key, "value": v, "unit": u,
                              "sigma": round(result["sigma"], 1 if key == "material.yield_angle" else 2),
@@ -168,8 +177,8 @@ def write_outputs(out, key, rows, target, law, result, fit, fig_path, fig_fmt, w
              f"experiments' law, {law['c1']:g} (1 - {law['D']}) ln(1 + {law['c2']:g}/{law['D']}) = "
              f"{target:.2f} L0 (data/crease_length_law_constants.csv). Everything else the "
              "simulation predicts."]
-    thresholds = {round(r["threshold"], 9) for r in rows if r.get("threshold") is not None}
-    if len(thresholds) == 1:
+    thresholds = {round(r["threshold"], 9) if r.get("threshold") is not None else None for r in rows}
+    if len(thresholds) == 1 and None not in thresholds:
         t = thresholds.pop()
         lines[-1] += (f" Creases are hinges with |p| > {t:.4g}, a permanent fold of more than "
                       f"{math.degrees(2 * math.asin(min(1.0, t / 2))):.1f} degrees, at every value.")

@@ -124,6 +124,24 @@ class YieldCalibration(unittest.TestCase):
         self.assertEqual(code, 3)
         self.assertIn("to 3 mm: add larger values", err)
 
+    def test_a_peak_below_the_target_is_not_sent_to_an_end(self):
+        # P rises, peaks below the target inside the grid and falls again (as at a crease angle
+        # of 27.5 degrees): extending the grid at either end is no answer, and the message says so.
+        code, err, doc, out = self.run_case({4.2e-3: ensemble(7.4, 0.4), 5.0e-3: ensemble(9.4, 1.2),
+                                             6.6e-3: ensemble(9.1, 0.4), 10e-3: ensemble(4.2, 0.3)},
+                                            key="material.yield_radius")
+        self.assertEqual(code, 3)
+        self.assertNotIn("add larger", err)
+        self.assertNotIn("add smaller", err)
+        self.assertIn("with a peak of 9.40 ± 1.20 L0 (0.79 of the target) at 5 mm inside the grid", err)
+        self.assertIn("7.40 and 4.20 L0 at its ends", doc["not_calibrated"])
+        # Below the target with the closest value at the first end: extend that way, whatever
+        # the overall trend from end to end.
+        code, err, _, _ = self.run_case({4.2e-3: ensemble(9.0, 0.4), 5.0e-3: ensemble(8.0, 0.4),
+                                         6.6e-3: ensemble(8.5, 0.4)}, key="material.yield_radius")
+        self.assertEqual(code, 3)
+        self.assertIn("to 4.2 mm: add smaller values", err)
+
     def test_a_non_monotonic_bracket_is_refused(self):
         code, err, doc, _ = self.run_case({28.0: ensemble(20, 1), 32.0: ensemble(8, 1),
                                            36.0: ensemble(16, 1), 40.0: ensemble(5, 1)})
@@ -160,15 +178,21 @@ def law(n):
 
 
 class Predictions(unittest.TestCase):
-    def run_case(self, factor, c1=50.0, c2=0.12, compactions=(0.63, 0.27, 0.18), sensitivity=None):
+    def run_case(self, factor, c1=50.0, c2=0.12, compactions=(0.63, 0.27, 0.18), sensitivity=None,
+                 runs=None):
         tmp = tempfile.mkdtemp()
+        if runs is None:
+            # Three seeds each growing as the law, at 0.9, 1 and 1.1 times the mean.
+            runs = [{"seed": k + 1, "cycles": [{"cycle": n, "perimeter_P": factor * law(n) * sk}
+                                               for n in range(1, 11)]}
+                    for k, sk in enumerate((0.9, 1.0, 1.1))]
         rows = []
         for n in range(1, 11):
             rows.append({"cycle": n, "compaction": D, "perimeter_P_mean": factor * law(n),
                          "perimeter_P_sem": 1.0, "a_fit_mean": 3.6, "a_fit_sem": 0.3,
                          "a_univ_mean": 3.0, "ks_n_tested": 3, "ks_n_rejected": 1 if n % 2 else 2,
                          "single_triangle_fraction_mean": 0.1, "n_facets_mean": 300})
-        ens = {"cycles": rows, "stages": {}, "threshold_sensitivity": sensitivity or {}, "runs": [],
+        ens = {"cycles": rows, "stages": {}, "threshold_sensitivity": sensitivity or {}, "runs": runs,
                "n_runs": 3, "compaction": D, "seeds": [1, 2, 3], "parameters": {"threshold": 0.318},
                "fits": {"perimeter_P": {"increments": {"C": 38.0, "sigma_C": 3.0, "n0": 2.5,
                                                         "sigma_n0": 0.5}}}}
@@ -228,26 +252,69 @@ class Predictions(unittest.TestCase):
         self.assertIn("| 0 of 9 cycles (ratios 1.50-1.50; cycle 1, the calibration, 1.50) | no |", md)
 
     def test_growth_shape_against_the_threshold(self):
-        # Counted at a lower threshold the runs grow as the law (P = 2 law), at a higher one not
-        # at all (P = 3 in every cycle); at the analysis's own (P = 1.5 law) as the law.
-        sens = {"factors_of_c0": [0.5, 1.0], "thresholds_mean": [0.2, 0.4],
-                "cycles": [{"cycle": n, "perimeter_P_mean": [2 * law(n), 3.0],
-                            "perimeter_P_sem": [0.0, 0.3]} for n in range(1, 11)]}
-        _, doc, md = self.run_case(1.5, sensitivity=sens)
+        # Per seed, counted at 0.5 c0 each run grows as the law (P = 2 law times the seed's
+        # scale: the ratio is 1 with no error, the seeds' P(n) and P(1) fully correlated); at
+        # c0 the mean does not grow at all (P(n) = 3) but the seeds trade places between cycle 1
+        # and later (anti-correlated: a larger error than independent s.e.m. would give); at
+        # the analysis's own threshold (P = 1.5 law per seed) as the law.
+        scale = (0.9, 1.0, 1.1)
+        runs = []
+        for k, sk in enumerate(scale):
+            runs.append({"seed": k + 1,
+                         "cycles": [{"cycle": n, "perimeter_P": 1.5 * law(n) * sk} for n in range(1, 11)],
+                         "threshold_sensitivity": {"cycles": [
+                             {"cycle": n, "perimeter_P": [2 * law(n) * sk,
+                                                          3.0 * (sk if n == 1 else scale[2 - k])]}
+                             for n in range(1, 11)]}})
+        sens = {"factors_of_c0": [0.5, 1.0], "thresholds_mean": [0.2, 0.4]}
+        _, doc, md = self.run_case(1.5, sensitivity=sens, runs=runs)
         rows = doc["threshold_shape"]
         self.assertEqual([r["threshold"] for r in rows], [0.2, 0.318, 0.4])
         self.assertEqual(rows[1]["role"], "the analysis's own")
         for r in rows[:2]:
             self.assertTrue(r["within_band"])
+            self.assertEqual(r["n_runs"], 3)
             for c in r["cycles"]:
                 self.assertAlmostEqual(c["shape_ratio"], 1.0, places=9)
+                self.assertAlmostEqual(c["sigma"], 0.0, places=6)
+                for x in c["per_run"]:
+                    self.assertAlmostEqual(x, 1.0, places=9)
         flat = rows[2]["cycles"]
         self.assertFalse(rows[2]["within_band"])
-        self.assertAlmostEqual(flat[-1]["shape_ratio"], law(1) / law(10), places=9)
-        self.assertAlmostEqual(flat[-1]["sigma"], flat[-1]["shape_ratio"] * math.hypot(0.1, 0.1), places=9)
+        self.assertAlmostEqual(rows[2]["P1_mean"], 3.0, places=9)
+        self.assertAlmostEqual(rows[2]["P1_sem"], math.sqrt(0.09 / 3), places=9)
+        r10 = law(1) / law(10)
+        self.assertAlmostEqual(flat[-1]["shape_ratio"], r10, places=9)
+        # Delta method: var = (0.01 + 0.01 + 0.02) / 3 for the plain ratio, twice what
+        # independent errors would give.
+        self.assertAlmostEqual(flat[-1]["sigma"], r10 * math.sqrt(0.04 / 3), places=9)
+        self.assertEqual([round(x / r10, 9) for x in flat[-1]["per_run"]],
+                         [round(3.3 / 2.7, 9), 1.0, round(2.7 / 3.3, 9)])
         self.assertAlmostEqual(rows[0]["fold_angle_deg"], math.degrees(2 * math.asin(0.1)), places=9)
-        self.assertIn("| 0.200 (0.5 c0) |", md)
-        self.assertIn("**0.318 (the analysis's own)**", md)
+        self.assertIn("| 0.200 (0.5 c0) | 11.5 | ", md)
+        self.assertIn("| **0.318 (the analysis's own)** |", md)
+        self.assertIn(f"| 1.00 ± 0.00 | 1.00 ± 0.00 | 1.00-1.00 | yes | 1.00, 1.00, 1.00 |", md)
+        self.assertIn(f"| {r10:.2f} ± {r10 * math.sqrt(0.04 / 3):.2f} |", md)
+
+    def test_growth_shape_edge_cases(self):
+        # A threshold given as an absolute value (no factor of c0) is not set in bold; a seed
+        # with no crease at cycle 1 is left out of that threshold's row; a threshold where no
+        # seed has one is left out; with the own threshold's P(1) = 0 in every seed the report
+        # says it is not tabulated.
+        runs = [{"seed": k + 1,
+                 "cycles": [{"cycle": n, "perimeter_P": 0.0 if n == 1 else law(n)} for n in range(1, 4)],
+                 "threshold_sensitivity": {"cycles": [
+                     {"cycle": n, "perimeter_P": [law(n) if (k or n > 1) else 0.0, 0.0]}
+                     for n in range(1, 4)]}}
+                for k in range(3)]
+        sens = {"factors_of_c0": [], "thresholds_mean": [0.2, 0.4]}
+        _, doc, md = self.run_case(1.1, sensitivity=sens, runs=runs)
+        rows = doc["threshold_shape"]
+        self.assertEqual([r["threshold"] for r in rows], [0.2])
+        self.assertEqual(rows[0]["n_runs"], 2)
+        self.assertIn("| 0.200 | 11.5 |", md)
+        self.assertNotIn("**0.200", md)
+        self.assertIn("The analysis's own threshold has no cycle 1 with P > 0", md)
 
     def test_without_a_sensitivity_table_only_the_own_threshold(self):
         _, doc, md = self.run_case(1.1)
