@@ -26,6 +26,7 @@ import argparse
 import json
 import math
 import os
+import statistics
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
@@ -77,13 +78,12 @@ def ratio_of_means(xs, ys):
     runs' covariance: P(n) and P(1) of one run are correlated (either way), so their s.e.m. do
     not add as if independent. None for the error with fewer than two runs."""
     n = len(xs)
-    mx, my = sum(xs) / n, sum(ys) / n
+    mx, my = statistics.fmean(xs), statistics.fmean(ys)
     r = my / mx
     if n < 2:
         return r, None
-    vx = sum((x - mx) ** 2 for x in xs) / (n - 1)
-    vy = sum((y - my) ** 2 for y in ys) / (n - 1)
-    cov = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / (n - 1)
+    vx, vy = statistics.variance(xs), statistics.variance(ys)
+    cov = statistics.covariance(xs, ys)
     var = r * r * (vy / (my * my) + vx / (mx * mx) - 2 * cov / (mx * my)) / n if my > 0 else None
     return r, (math.sqrt(max(var, 0.0)) if var is not None else None)
 
@@ -139,9 +139,8 @@ def shape_rows(ens, law):
         if not cyc:
             continue
         t = s["threshold"]
-        m1 = sum(p1s) / len(p1s)
-        e1 = (math.sqrt(sum((x - m1) ** 2 for x in p1s) / (len(p1s) - 1) / len(p1s))
-              if len(p1s) > 1 else None)
+        m1 = statistics.fmean(p1s)
+        e1 = statistics.stdev(p1s) / math.sqrt(len(p1s)) if len(p1s) > 1 else None
         rows.append({"role": s["role"], "factor_of_c0": s["factor_of_c0"], "threshold": t,
                      "fold_angle_deg": math.degrees(2 * math.asin(min(1.0, t / 2))),
                      "P1_mean": m1, "P1_sem": e1, "n_runs": len(runs), "cycles": cyc,

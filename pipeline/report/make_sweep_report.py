@@ -10,7 +10,6 @@ usage: make_sweep_report.py --points runs/sweeps/NAME/points.json --results resu
                             -o results/NAME/REPORT.md
 """
 import argparse
-import math
 import os
 import sys
 
@@ -119,14 +118,11 @@ def convergence_section(add, doc):
             + cover + "\n")
 
 
-def t_coverage(k, nu, steps=2000):
-    """P(|T| < k) for Student's t with nu degrees of freedom (Simpson's rule on its density):
-    how much a band of k s.e.m. from nu + 1 seeds covers."""
-    c = math.exp(math.lgamma((nu + 1) / 2) - math.lgamma(nu / 2)) / math.sqrt(nu * math.pi)
-    f = [c * (1 + (k * i / steps) ** 2 / nu) ** (-(nu + 1) / 2) for i in range(steps + 1)]
-    h = k / steps
-    simpson = h / 3 * (f[0] + f[-1] + 4 * sum(f[1:-1:2]) + 2 * sum(f[2:-1:2]))
-    return 2 * simpson
+def t_coverage(k, nu):
+    """P(|T| < k) for Student's t with nu degrees of freedom: how much a band of k s.e.m. from
+    nu + 1 seeds covers."""
+    from scipy.stats import t
+    return float(t.cdf(k, nu) - t.cdf(-k, nu))
 
 
 def main():
