@@ -11,9 +11,11 @@ it is accepted when the differences keep their sign and 0.5 <= p <= 4, and the e
 Q* = Q3 + (Q3 - Q2) / ((h2/h3)^p - 1) from the finest two. When the step between the finest
 rungs is no smaller than the one before (same sign), nothing converges yet and there is no
 estimate. Otherwise (two rungs, or a non-monotone or out-of-range order) p = 1 is assumed and
-the row says so; with a single rung there is no estimate. Q*'s error propagates the finest two
-s.e.m.; a rung's relative error is (Q - Q*) / Q*, its s.e.m. that of the finest two rungs' step
-for those two (Q* is made from them) and the rung's and Q*'s together for any other. Where the
+the row says so; with a single rung there is no estimate. The errors are propagated to first
+order in the rungs' s.e.m. (independent ensembles) through the estimate itself, differentiated
+numerically: Q*'s s.e.m., and each rung's relative error (Q - Q*) / Q* with its s.e.m., which
+counts the rung's own noise, Q*'s (including the observed order's, so the third-finest rung
+enters too) and their correlation where the rung is one Q* is made from. Where the
 change between the finest two rungs is within twice their combined s.e.m. the row says the
 difference is not resolved by the seeds (the extrapolation is then mostly noise).
 
@@ -25,6 +27,7 @@ or that has no s.e.m., shows no rung, whatever its means say). Both trust the mo
 an assumed order, or a step marked as noise, makes every error less certain than quoted.
 
 usage: convergence.py --points runs/sweeps/NAME/points.json --results results/NAME
+       convergence.py --refresh-kept docs/studies/NAME   (a kept study, from the means it holds)
 """
 import argparse
 import csv
@@ -100,36 +103,78 @@ def extrapolate(rungs):
     (h2, q2, s2), (h3, q3_, s3) = rungs[-2], rungs[-1]
     k = 1.0 / ((h2 / h3) ** p - 1.0)
     est = q3_ + k * (q3_ - q2)
-    # Without the finest two rungs' s.e.m. (a single seed) the estimate's error and whether
-    # the seeds resolve the step are unknown, not zero.
+    # Without the finest two rungs' s.e.m. (a single seed) whether the seeds resolve the step
+    # is unknown, not zero.
     known = s2 is not None and s3 is not None
-    est_sem = math.hypot((1 + k) * s3, k * s2) if known else None
     step = abs(q3_ - q2)
     resolved = step > 2 * math.hypot(s2, s3) if known else None
-    return {"estimate": est, "estimate_sem": est_sem, "order": p, "method": method,
-            "finest_step_resolved": resolved, "extrapolation_k": k,
-            "finest_h": [h2, h3]}
+    return {"estimate": est, "order": p, "method": method, "order_observed": "observed" in method,
+            "finest_step_resolved": resolved, "extrapolation_k": k}
 
 
-def rel_error_sem(h, m, s, est, rungs_sem):
-    """The s.e.m. of (m - Q*) / Q* at the rung of spacing h. Q* = (1 + k) Q3 - k Q2 is built
-    from the finest two rungs, so their own errors against it are -k (Q3 - Q2) and
-    (1 + k) (Q2 - Q3): these carry only the two rungs' s.e.m. (treating Q* as independent of
-    them would count each twice). Any coarser rung is independent of Q*. None where an s.e.m.
-    is missing. The error of the denominator Q* is left out (first order)."""
+def estimate_gradient(rungs, est):
+    """dQ*/dQ_j for every rung j (coarse to fine), by central differences through `extrapolate`
+    itself: with an observed order, Q* depends on the finest three rungs through p as well as on
+    the finest two directly, and differentiating the function that makes Q* carries all of it.
+    A side whose perturbed ladder changes method (observed <-> assumed order) is not used; None
+    when neither side keeps it (Q* is then not differentiable there)."""
+    grad = []
+    for j, (h, m, s) in enumerate(rungs):
+        if m is None or not math.isfinite(m):
+            grad.append(0.0)  # not part of the ladder extrapolate sees
+            continue
+        d = 1e-6 * max(abs(m), abs(est["estimate"]), 1e-300)
+        sides = []
+        for sign in (1, -1):
+            moved = list(rungs)
+            moved[j] = (h, m + sign * d, s)
+            e = extrapolate(moved)
+            if e.get("estimate") is not None and e["order_observed"] == est["order_observed"]:
+                sides.append((sign, e["estimate"]))
+        if len(sides) == 2:
+            grad.append((sides[0][1] - sides[1][1]) / (2 * d))
+        elif len(sides) == 1:
+            sign, e = sides[0]
+            grad.append(sign * (e - est["estimate"]) / d)
+        else:
+            return None
+    return grad
+
+
+def propagate(rungs, est):
+    """The s.e.m. of Q* and of every rung's relative error r_i = Q_i / Q* - 1, to first order in
+    the rungs' s.e.m. (the rungs are independent ensembles, so their variances add):
+        var Q*  = sum_j (dQ*/dQ_j s_j)^2,
+        var r_i = sum_j ((delta_ij - r'_i dQ*/dQ_j) s_j / Q*)^2  with r'_i = Q_i / Q*,
+    which keeps the order's own noise, the rungs Q* is made from (the finest two, and the third
+    through an observed order; a rung inside Q* is not independent of it) and the denominator.
+    Returns (estimate_sem, [rel_error_sem per rung]); a missing s.e.m. where it counts (a
+    non-zero derivative) makes the figures it enters None."""
+    n = len(rungs)
+    grad = estimate_gradient(rungs, est)
+    if grad is None:
+        return None, [None] * n
     e = est["estimate"]
-    if s is None or est.get("estimate_sem") is None:
-        return None
-    h2, h3 = est["finest_h"]
-    k = est["extrapolation_k"]
-    s2, s3 = rungs_sem[h2], rungs_sem[h3]
-    if h == h3:
-        num = k * math.hypot(s2, s3)
-    elif h == h2:
-        num = (1 + k) * math.hypot(s2, s3)
-    else:
-        num = math.hypot(s, est["estimate_sem"])
-    return num / abs(e)
+
+    def sem_of(coeffs):
+        total = 0.0
+        for c, (_, _, s) in zip(coeffs, rungs):
+            if c == 0.0:
+                continue
+            if s is None:
+                return None
+            total += (c * s) ** 2
+        return math.sqrt(total)
+
+    est_sem = sem_of(grad)
+    rel = []
+    for i, (_, m, _) in enumerate(rungs):
+        if m is None:
+            rel.append(None)
+            continue
+        coeffs = [((1.0 if j == i else 0.0) - m / e * g) / e for j, g in enumerate(grad)]
+        rel.append(sem_of(coeffs))
+    return est_sem, rel
 
 
 def within_range(est, unit):
@@ -154,6 +199,25 @@ def rung_of(points, group, results):
     die(f"{results}: group {group} has no points")
 
 
+def convergence_row(key, label, unit, cycle, rungs, vals):
+    """One statistic at one cycle: rungs [{"nodes", ...}] coarse to fine, vals [(h, mean, sem,
+    runs)] alike. The estimate, its s.e.m. and every rung's relative error with its s.e.m."""
+    ladder = [(h, m, s) for h, m, s, _ in vals]
+    est = within_range(extrapolate(ladder), unit)
+    e = est.get("estimate")
+    if e:
+        est["estimate_sem"], rel_sems = propagate(ladder, est)
+    else:
+        est["estimate_sem"], rel_sems = None, [None] * len(vals)
+    per_rung = []
+    for r, (h, m, s, n), rel_sem in zip(rungs, vals, rel_sems):
+        rel = (m - e) / e if (e and m is not None) else None
+        per_rung.append({"nodes": r["nodes"], "h_m": h, "runs": n, "mean": m, "sem": s,
+                         "rel_error": rel, "rel_error_sem": rel_sem if rel is not None else None})
+    return {"quantity": key, "label": label, "unit": unit, "cycle": cycle, "rungs": per_rung,
+            **est}
+
+
 def table(points, results):
     groups = sweep_groups(points)
     rungs = []
@@ -171,20 +235,21 @@ def table(points, results):
                 cyc = r["ensemble"]["cycles"][c]
                 vals.append((r["h_m"], cyc.get(key + "_mean"), cyc.get(key + "_sem"),
                              r["ensemble"]["n_runs"]))
-            est = extrapolate([(h, m, s) for h, m, s, _ in vals])
-            est = within_range(est, unit)
-            per_rung = []
-            sems = {h: s for h, m, s, _ in vals}
-            for r, (h, m, s, n) in zip(rungs, vals):
-                e = est.get("estimate")
-                rel = (m - e) / e if (e and m is not None) else None
-                rel_sem = rel_error_sem(h, m, s, est, sems) if rel is not None else None
-                per_rung.append({"nodes": r["nodes"], "h_m": h, "runs": n, "mean": m, "sem": s,
-                                 "rel_error": rel, "rel_error_sem": rel_sem})
-            rows.append({"quantity": key, "label": label, "unit": unit,
-                         "cycle": rungs[0]["ensemble"]["cycles"][c]["cycle"],
-                         "rungs": per_rung, **est})
+            rows.append(convergence_row(key, label, unit,
+                                        rungs[0]["ensemble"]["cycles"][c]["cycle"], rungs, vals))
     return rungs, rows
+
+
+def recompute(doc):
+    """The rows of a kept convergence.json made again from the rungs' means and s.e.m. it
+    holds (a kept study keeps no runs): how a change to the estimate or its errors reaches the
+    studies already in the repository."""
+    rows = []
+    for old in doc["rows"]:
+        vals = [(g["h_m"], g["mean"], g["sem"], g["runs"]) for g in old["rungs"]]
+        rows.append(convergence_row(old["quantity"], old["label"], old["unit"], old["cycle"],
+                                    old["rungs"], vals))
+    return rows
 
 
 def error_bound(rung, margin):
@@ -223,45 +288,96 @@ def largest_error_bound(rows, rungs, key, nodes):
     return max(b) if b and None not in b else None
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--points", required=True, help="runs/sweeps/NAME/points.json")
-    ap.add_argument("--results", required=True, help="results/NAME (groups/GROUP/ensemble.json)")
-    a = ap.parse_args()
-    points = load_json(a.points, "sweep points file")
-    keys = [g["key"] for g in points["grid"]]
-    if keys != ["mesh.nodes"]:
-        die(f"{a.points}: a convergence ladder varies mesh.nodes alone (grid: {', '.join(keys)})")
-    rungs, rows = table(points, a.results)
-    doc = {"sweep": points["name"],
-           "resolution_note": "h = sqrt(sheet area / triangles), m; Q(h) = Q* + C h^p",
-           "rungs": [{k: r[k] for k in ("group", "nodes", "h_m")} | {"runs": r["ensemble"]["n_runs"],
-                     "seeds": r["ensemble"]["seeds"]} for r in rungs],
-           "presets": {name: {"tolerance": tol,
-                              "coarsest_nodes": coarsest_within(rows, rungs, "perimeter_P", tol),
-                              "coarsest_nodes_shown": coarsest_within(rows, rungs, "perimeter_P",
-                                                                      tol, margin=2.0)}
-                       for name, tol in PRESET_TOLERANCES.items()},
-           "error_bound_2sem": {str(r["nodes"]): largest_error_bound(rows, rungs, "perimeter_P",
-                                                                     r["nodes"]) for r in rungs},
-           "rows": rows}
-    os.makedirs(a.results, exist_ok=True)
-    out = os.path.join(a.results, "convergence.json")
+def document(sweep, rungs, rows):
+    """convergence.json: rungs [{"group", "nodes", "h_m", "runs", "seeds"}] coarse to fine."""
+    return {"sweep": sweep,
+            "resolution_note": "h = sqrt(sheet area / triangles), m; Q(h) = Q* + C h^p",
+            "rungs": rungs,
+            "presets": {name: {"tolerance": tol,
+                               "coarsest_nodes": coarsest_within(rows, rungs, "perimeter_P", tol),
+                               "coarsest_nodes_shown": coarsest_within(rows, rungs, "perimeter_P",
+                                                                       tol, margin=2.0)}
+                        for name, tol in PRESET_TOLERANCES.items()},
+            "error_bound_2sem": {str(r["nodes"]): largest_error_bound(rows, rungs, "perimeter_P",
+                                                                      r["nodes"]) for r in rungs},
+            "rows": rows}
+
+
+def write(results, doc):
+    """convergence.json and convergence.csv into `results`, each replaced whole."""
+    os.makedirs(results, exist_ok=True)
+    out = os.path.join(results, "convergence.json")
     with open(out + ".new", "w") as f:
         json.dump(doc, f, indent=1)
     os.replace(out + ".new", out)
-    out_csv = os.path.join(a.results, "convergence.csv")
+    out_csv = os.path.join(results, "convergence.csv")
     with open(out_csv + ".new", "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["quantity", "unit", "cycle", "nodes", "h_m", "runs", "mean", "sem",
                     "estimate", "estimate_sem", "order", "rel_error", "rel_error_sem"])
-        for r in rows:
+        for r in doc["rows"]:
             for g in r["rungs"]:
                 w.writerow([r["quantity"], r["unit"], r["cycle"], g["nodes"], f"{g['h_m']:.6g}",
                             g["runs"], g["mean"], g["sem"], r.get("estimate"),
                             r.get("estimate_sem"), r.get("order"), g["rel_error"],
                             g["rel_error_sem"]])
     os.replace(out_csv + ".new", out_csv)
+    return out, out_csv
+
+
+def refresh_kept(folder):
+    """A kept study (docs/studies/NAME, `make keep-study`): its table made again from the means
+    it holds, and its REPORT.md's convergence section rewritten to match."""
+    src = os.path.join(folder, "convergence.json")
+    old = load_json(src, "kept convergence table")
+    doc = document(old["sweep"], old["rungs"], recompute(old))
+    outs = write(folder, doc)
+    report = os.path.join(folder, "REPORT.md")
+    if os.path.isfile(report):
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                                        "report"))
+        from make_sweep_report import convergence_section
+        with open(report) as f:
+            text = f.read()
+        head = "## Convergence in resolution\n"
+        if head not in text:
+            die(f"{report}: no '{head.strip()}' section to refresh")
+        start = text.index(head)
+        end = text.find("\n## ", start + len(head))
+        lines = []
+        convergence_section(lines.append, doc)
+        text = text[:start] + "\n".join(lines) + (text[end:] if end >= 0 else "\n")
+        with open(report + ".new", "w") as f:
+            f.write(text)
+        os.replace(report + ".new", report)
+        outs += (report,)
+    return doc, outs
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--points", help="runs/sweeps/NAME/points.json")
+    ap.add_argument("--results", help="results/NAME (groups/GROUP/ensemble.json)")
+    ap.add_argument("--refresh-kept", metavar="FOLDER",
+                    help="docs/studies/NAME: remake a kept study's table and report section "
+                    "from the means it holds (no runs needed)")
+    a = ap.parse_args()
+    if a.refresh_kept:
+        doc, outs = refresh_kept(a.refresh_kept)
+        print(f"convergence.py: {len(doc['rows'])} rows refreshed -> {', '.join(outs)}")
+        return
+    if not (a.points and a.results):
+        ap.error("--points and --results are required (or --refresh-kept FOLDER)")
+    points = load_json(a.points, "sweep points file")
+    keys = [g["key"] for g in points["grid"]]
+    if keys != ["mesh.nodes"]:
+        die(f"{a.points}: a convergence ladder varies mesh.nodes alone (grid: {', '.join(keys)})")
+    rungs, rows = table(points, a.results)
+    doc = document(points["name"],
+                   [{k: r[k] for k in ("group", "nodes", "h_m")}
+                    | {"runs": r["ensemble"]["n_runs"], "seeds": r["ensemble"]["seeds"]}
+                    for r in rungs], rows)
+    out, out_csv = write(a.results, doc)
     print(f"convergence.py: {len(rungs)} rungs ({', '.join(str(r['nodes']) for r in rungs)} "
           f"nodes), {len(rows)} rows -> {out}, {out_csv}")
 
