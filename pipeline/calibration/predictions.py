@@ -76,7 +76,8 @@ def facet_rows(ens):
 def ratio_of_means(xs, ys):
     """mean(ys) / mean(xs) over paired runs, and its standard error by the delta method with the
     runs' covariance: P(n) and P(1) of one run are correlated (either way), so their s.e.m. do
-    not add as if independent. None for the error with fewer than two runs."""
+    not add as if independent. var R = (var y - 2 R cov(x, y) + R^2 var x) / (n mean(x)^2), which
+    holds for mean(y) = 0 too. Needs mean(x) > 0; None for the error with fewer than two runs."""
     n = len(xs)
     mx, my = statistics.fmean(xs), statistics.fmean(ys)
     r = my / mx
@@ -84,28 +85,46 @@ def ratio_of_means(xs, ys):
         return r, None
     vx, vy = statistics.variance(xs), statistics.variance(ys)
     cov = statistics.covariance(xs, ys)
-    var = r * r * (vy / (my * my) + vx / (mx * mx) - 2 * cov / (mx * my)) / n if my > 0 else None
-    return r, (math.sqrt(max(var, 0.0)) if var is not None else None)
+    var = (vy - 2 * r * cov + r * r * vx) / (n * mx * mx)
+    return r, math.sqrt(max(var, 0.0))
+
+
+def sensitivity_keys(ts):
+    """The slots of one run's threshold-sensitivity table, keyed as crumple-analyze ensemble
+    keys them (analysis/ensemble/ensemble_tables.cpp): by factor of c0 (6 digits) when every
+    slot has one, else by threshold (9 digits). Runs may list different slots or another
+    order, so a slot is found by its key, never by its position."""
+    f, t = ts.get("factors_of_c0") or [], ts.get("thresholds") or []
+    if f and len(f) == len(t) and all(x is not None for x in f):
+        return [("factor", round(x, 6)) for x in f]
+    return [("threshold", round(x, 9)) if x is not None else None for x in t]
 
 
 def run_series(ens):
-    """Per threshold, each run's P per cycle: the ensemble's sensitivity thresholds (from each
-    run's table) and the analysis's own threshold (each run's cycles)."""
+    """Per threshold, each run's P per cycle: the ensemble's sensitivity thresholds (each run's
+    value found by the slot's key in that run's own table) and the analysis's own threshold
+    (each run's cycles)."""
     ts = ens.get("threshold_sensitivity") or {}
     factors, thresholds = ts.get("factors_of_c0") or [], ts.get("thresholds_mean") or []
     runs = ens.get("runs") or []
     series = []
     for k, t in enumerate(thresholds):
+        f = factors[k] if k < len(factors) else None
+        key = (("factor", round(f, 6)) if f is not None else
+               ("threshold", round(t, 9)) if t is not None else None)
         per_run = []
         for r in runs:
+            own = r.get("threshold_sensitivity") or {}
+            keys = sensitivity_keys(own)
+            i = keys.index(key) if key is not None and key in keys else None
             vals = {}
-            for c in (r.get("threshold_sensitivity") or {}).get("cycles", []):
+            for c in own.get("cycles", []) if i is not None else []:
                 ps = c.get("perimeter_P") or []
-                if k < len(ps) and ps[k] is not None:
-                    vals[c["cycle"]] = ps[k]
+                if i < len(ps) and ps[i] is not None:
+                    vals[c["cycle"]] = ps[i]
             per_run.append(vals)
-        series.append({"factor_of_c0": factors[k] if k < len(factors) else None, "threshold": t,
-                       "role": "sensitivity", "runs": per_run})
+        series.append({"factor_of_c0": f, "threshold": t, "role": "sensitivity",
+                       "runs": per_run})
     own = ens.get("parameters", {}).get("threshold")
     series.append({"factor_of_c0": None, "threshold": own, "role": "the analysis's own",
                    "runs": [{c["cycle"]: c["perimeter_P"] for c in r.get("cycles", [])
@@ -115,31 +134,38 @@ def run_series(ens):
 
 def shape_rows(ens, law):
     """Section 4: per threshold of the ensemble's sensitivity table, and for the analysis's own
-    threshold, P(n)/P(1) divided by the law's L(n)/L(1), with P(n) and P(1) the means over the
-    runs that have both (P(1) > 0). Its error is that of a ratio of correlated means
-    (ratio_of_means). Rows without a cycle 1 and a later cycle are left out; the report says so."""
+    threshold, P(n)/P(1) divided by the law's L(n)/L(1), with P(n) and P(1) the means over
+    every run that has both (a run with no crease at cycle 1 counts, with P(1) = 0: leaving it
+    out would bias the ratio up). Its error is that of a ratio of correlated means
+    (ratio_of_means). Each run's own ratio is listed where its P(1) > 0 (None where it is 0).
+    Rows whose mean P(1) is 0, or without a cycle 1 and a later cycle, are left out; the report
+    says so."""
     by_n = {c["cycle"]: c["law"] for c in law["cycles"]}
     rows = []
     for s in run_series(ens):
-        runs = [v for v in s["runs"] if v.get(1, 0) > 0]
+        runs = [v for v in s["runs"] if 1 in v]
         if s["threshold"] is None or not runs:
             continue
         p1s = [v[1] for v in runs]
+        m1 = statistics.fmean(p1s)
+        if m1 <= 0:
+            continue
         cyc = []
         for n in sorted({n for v in runs for n in v}):
             if n == 1 or n not in by_n:
                 continue
             pairs = [(v[1], v[n]) for v in runs if n in v]
+            if statistics.fmean(a for a, _ in pairs) <= 0:
+                continue
             r, sig = ratio_of_means([a for a, _ in pairs], [b for _, b in pairs])
             law_ratio = by_n[n] / by_n[1]
             cyc.append({"cycle": n, "shape_ratio": r / law_ratio,
                         "sigma": sig / law_ratio if sig is not None else None,
                         "n_runs": len(pairs),
-                        "per_run": [b / a / law_ratio for a, b in pairs]})
+                        "per_run": [b / a / law_ratio if a > 0 else None for a, b in pairs]})
         if not cyc:
             continue
         t = s["threshold"]
-        m1 = statistics.fmean(p1s)
         e1 = statistics.stdev(p1s) / math.sqrt(len(p1s)) if len(p1s) > 1 else None
         rows.append({"role": s["role"], "factor_of_c0": s["factor_of_c0"], "threshold": t,
                      "fold_angle_deg": math.degrees(2 * math.asin(min(1.0, t / 2))),
@@ -210,7 +236,7 @@ def report(doc, fig_name):
     rows = doc.get("threshold_shape") or []
     L += ["## 4. The growth's shape against the crease threshold", ""]
     if not rows:
-        L += ["No crease threshold of the runs has a cycle 1 with P > 0 and a later cycle (or the "
+        L += ["No crease threshold of the runs has a mean P > 0 at cycle 1 and a later cycle (or the "
               "ensemble has no per-run threshold-sensitivity table): not tabulated.", ""]
         return "\n".join(L)
     last = max(c["cycle"] for r in rows for c in r["cycles"])
@@ -222,7 +248,9 @@ def report(doc, fig_name):
           f"would have to be calibrated again, on other runs, so these rows show how far the "
           f"convention can move the growth, not predictions. Errors are those of a ratio of means "
           f"whose numerator and denominator are correlated across the seeds (delta method); with "
-          f"few seeds they are themselves uncertain. The last column gives each seed's own ratio.", "",
+          f"few seeds they are themselves uncertain. The means are over every seed, a seed without "
+          f"creases at cycle 1 included; the last column gives each seed's own ratio (– where "
+          f"its P(1) is 0).", "",
           f"| threshold | fold angle (deg) | P(1) (L0) | shape ratio, cycle 2 | cycle {last} | "
           f"range over cycles 2-{last} | within ±20 % | cycle {last} per seed |",
           "| --- | --- | --- | --- | --- | --- | --- | --- |"]
@@ -238,13 +266,14 @@ def report(doc, fig_name):
             return f"{c['shape_ratio']:.2f}" + (f" ± {c['sigma']:.2f}" if c["sigma"] is not None else "")
         lo = min(c["shape_ratio"] for c in r["cycles"])
         hi = max(c["shape_ratio"] for c in r["cycles"])
-        seeds = ", ".join(f"{x:.2f}" for x in by[last]["per_run"]) if last in by else "–"
-        p1_sem = f"{r['P1_sem']:.2f}" if r["P1_sem"] is not None else "–"
-        L.append(f"| {name} | {r['fold_angle_deg']:.1f} | {r['P1_mean']:.2f} ± {p1_sem} | "
+        seeds = (", ".join("–" if x is None else f"{x:.2f}" for x in by[last]["per_run"])
+                 if last in by else "–")
+        p1 = f"{r['P1_mean']:.2f}" + (f" ± {r['P1_sem']:.2f}" if r["P1_sem"] is not None else "")
+        L.append(f"| {name} | {r['fold_angle_deg']:.1f} | {p1} | "
                  f"{cell(2)} | {cell(last)} | {lo:.2f}-{hi:.2f} | {yes(r['within_band'])} | {seeds} |")
     if not any(r["role"] != "sensitivity" for r in rows):
         L.append("")
-        L.append("The analysis's own threshold has no cycle 1 with P > 0 and a later cycle: not tabulated.")
+        L.append("The analysis's own threshold has no mean P > 0 at cycle 1 and a later cycle: not tabulated.")
     L.append("")
     return "\n".join(L)
 

@@ -99,21 +99,44 @@ def interpolate(rows, target, kind):
         return {"value": value, "sigma": sigma, "between": [a["value"], b["value"]],
                 "dlnP_dvalue": slope}, None
     # Not bracketed. Where P comes closest to the target at an end of the grid, extending the
-    # grid beyond that end may reach it; where it comes closest inside the grid (a peak below
-    # the target, a dip above it), P is not monotonic in the yield and extending is no answer.
+    # grid beyond that end may reach it. Where it comes closest inside the grid (a peak below the
+    # target, a dip above it) and some inner value is closer than both ends by more than twice
+    # their combined s.e.m., P is not monotonic in the yield and extending is no answer. An inner best within the noise of an
+    # end shows no turn: extend the end where P moves toward the target, if either does.
     above = all(r["P_mean"] > target for r in rows)
-    k = min(range(len(rows)), key=lambda i: abs(rows[i]["P_mean"] - target))
-    best = rows[k]
     side = "above" if above else "below"
+    dist = [abs(r["P_mean"] - target) for r in rows]
+    k = min(range(len(rows)), key=lambda i: dist[i])
+    best = rows[k]
+    ends = (0, len(rows) - 1)
+
+    def beats(i, j):
+        """Row i closer to the target than row j by more than 2 combined s.e.m."""
+        return dist[j] - dist[i] > 2 * math.hypot(rows[i]["P_sem"] or 0.0, rows[j]["P_sem"] or 0.0)
+
     if 0 < k < len(rows) - 1:
-        turn = "a dip" if above else "a peak"
-        return None, (f"P after cycle 1 is {side} the target {target:.2f} L0 at every {kind['name']} "
-                      f"from {rows[0]['value']:g} to {rows[-1]['value']:g} {u}, with {turn} of "
-                      f"{best['P_mean']:.2f} ± {best['P_sem']:.2f} L0 ({best['P_mean'] / target:.2f} "
-                      f"of the target) at {best['value']:g} {u} inside the grid and "
-                      f"{rows[0]['P_mean']:.2f} and {rows[-1]['P_mean']:.2f} L0 at its ends: P is "
-                      f"not monotonic in the {kind['name']}, and no value of the grid reaches the "
-                      f"target")
+        # The turn is shown when some inner value beats both ends (not necessarily the closest,
+        # whose own s.e.m. may be the largest); the closest is the one reported.
+        if any(all(beats(i, e) for e in ends) for i in range(1, len(rows) - 1)):
+            turn = "a dip" if above else "a peak"
+            return None, (f"P after cycle 1 is {side} the target {target:.2f} L0 at every "
+                          f"{kind['name']} from {rows[0]['value']:g} to {rows[-1]['value']:g} {u}, "
+                          f"with {turn} of {best['P_mean']:.2f} ± {best['P_sem']:.2f} L0 "
+                          f"({best['P_mean'] / target:.2f} of the target) at {best['value']:g} {u} "
+                          f"inside the grid and {rows[0]['P_mean']:.2f} and {rows[-1]['P_mean']:.2f} "
+                          f"L0 at its ends: P is not monotonic in the {kind['name']}, and no value "
+                          f"of the grid reaches the target")
+        toward = [e for e, nb in ((0, 1), (len(rows) - 1, len(rows) - 2)) if dist[e] < dist[nb]]
+        if not toward:
+            return None, (f"P after cycle 1 is {side} the target {target:.2f} L0 at every "
+                          f"{kind['name']} from {rows[0]['value']:g} to {rows[-1]['value']:g} {u}; "
+                          f"it comes closest at {best['value']:g} {u} ({best['P_mean']:.2f} ± "
+                          f"{best['P_sem']:.2f} L0) inside the grid, but not by more than twice the "
+                          f"seeds' errors against both ends, and P moves away from the target at "
+                          f"both ends: the grid does not show which way the target lies; add seeds, "
+                          f"or values beyond both ends")
+        k = min(toward, key=lambda e: dist[e])
+        best = rows[k]
     way = "smaller" if k == 0 else "larger"
     return None, (f"P after cycle 1 is {side} the target {target:.2f} L0 at every {kind['name']} "
                   f"to {best['value']:g} {u}: add {way} values to the grid")

@@ -3,13 +3,16 @@
 the kept calibration:
 - P falling exactly exponentially with the angle: the calibrated angle is the exact crossing of
   the law's value, its uncertainty the seeds' s.e.m. carried through the interpolation;
-- a target above or below every angle's P: exit 3, saying which way to extend the grid;
+- a target above or below every angle's P: exit 3, saying which way to extend the grid, or that
+  P peaks or dips inside it where the seeds show the turn (not where it is within their noise);
 - groups crumpled to different compactions: exit 2;
 - protocols/axial_crumpling.yaml states the angle docs/studies/yield_calibration/ found;
 - pipeline/calibration/predictions.py: a simulation 10 % above the law in every cycle, with
   c1, c2, a and the KS test within their goals, reaches every goal; 50 % above misses the P goal
   and a collapse far from the law misses c1 and c2; the growth's shape at each threshold of the
-  sensitivity table (and at the analysis's own) is P(n)/P(1) over the law's L(n)/L(1).
+  sensitivity table (and at the analysis's own) is P(n)/P(1) over the law's L(n)/L(1), a ratio
+  of means over every seed (one without creases at cycle 1 included), each run's slot found by
+  its key, with the delta method's error checked against re-drawn ensembles.
 
 usage: test_yield_calibration.py   (from the repository root)
 """
@@ -142,6 +145,31 @@ class YieldCalibration(unittest.TestCase):
         self.assertEqual(code, 3)
         self.assertIn("to 4.2 mm: add smaller values", err)
 
+    def test_a_turn_within_the_seeds_noise_is_no_turn(self):
+        # A dip above the target shown by the seeds (24 ± 0.5 inside, 30 ± 0.5 and 28 ± 0.5 at
+        # the ends): not sent to an end.
+        code, err, _, _ = self.run_case({28.0: ensemble(30, 0.5), 30.0: ensemble(24, 0.5),
+                                         34.0: ensemble(28, 0.5)})
+        self.assertEqual(code, 3)
+        self.assertIn("with a dip of 24.00 ± 0.50 L0", err)
+        # The same means with s.e.m. 3: the dip is within the noise of the ends. P moves toward
+        # the target at neither end (both ends are further from it than their neighbour), so
+        # the grid does not show which way.
+        code, err, _, _ = self.run_case({28.0: ensemble(30, 3), 30.0: ensemble(24, 3),
+                                         34.0: ensemble(28, 3)})
+        self.assertEqual(code, 3)
+        self.assertNotIn("dip of", err)
+        self.assertIn("does not show which way the target lies", err)
+        # Below the target, a peak of 9.0 ± 1 inside against 8.8 ± 0.3 at the last end, which
+        # still rises toward the target past its neighbour 8.5: extend that end, and no peak is
+        # claimed.
+        code, err, _, _ = self.run_case({4.2e-3: ensemble(6.0, 0.3), 5.0e-3: ensemble(9.0, 1.0),
+                                         6.6e-3: ensemble(8.5, 0.3), 8.0e-3: ensemble(8.8, 0.3)},
+                                        key="material.yield_radius")
+        self.assertEqual(code, 3)
+        self.assertNotIn("peak of", err)
+        self.assertIn("to 8 mm: add larger values", err)
+
     def test_a_non_monotonic_bracket_is_refused(self):
         code, err, doc, _ = self.run_case({28.0: ensemble(20, 1), 32.0: ensemble(8, 1),
                                            36.0: ensemble(16, 1), 40.0: ensemble(5, 1)})
@@ -257,15 +285,19 @@ class Predictions(unittest.TestCase):
         # c0 the mean does not grow at all (P(n) = 3) but the seeds trade places between cycle 1
         # and later (anti-correlated: a larger error than independent s.e.m. would give); at
         # the analysis's own threshold (P = 1.5 law per seed) as the law.
+        # Seed 2 lists its slots in the other order: a slot is matched by its factor of c0.
         scale = (0.9, 1.0, 1.1)
         runs = []
         for k, sk in enumerate(scale):
+            order = [1, 0] if k == 1 else [0, 1]
             runs.append({"seed": k + 1,
                          "cycles": [{"cycle": n, "perimeter_P": 1.5 * law(n) * sk} for n in range(1, 11)],
-                         "threshold_sensitivity": {"cycles": [
-                             {"cycle": n, "perimeter_P": [2 * law(n) * sk,
-                                                          3.0 * (sk if n == 1 else scale[2 - k])]}
-                             for n in range(1, 11)]}})
+                         "threshold_sensitivity": {
+                             "factors_of_c0": [[0.5, 1.0][i] for i in order],
+                             "thresholds": [[0.2, 0.4][i] for i in order],
+                             "cycles": [{"cycle": n, "perimeter_P": [
+                                 [2 * law(n) * sk, 3.0 * (sk if n == 1 else scale[2 - k])][i]
+                                 for i in order]} for n in range(1, 11)]}})
         sens = {"factors_of_c0": [0.5, 1.0], "thresholds_mean": [0.2, 0.4]}
         _, doc, md = self.run_case(1.5, sensitivity=sens, runs=runs)
         rows = doc["threshold_shape"]
@@ -298,12 +330,13 @@ class Predictions(unittest.TestCase):
 
     def test_growth_shape_edge_cases(self):
         # A threshold given as an absolute value (no factor of c0) is not set in bold; a seed
-        # with no crease at cycle 1 is left out of that threshold's row; a threshold where no
-        # seed has one is left out; with the own threshold's P(1) = 0 in every seed the report
-        # says it is not tabulated.
+        # with no crease at cycle 1 stays in that threshold's means (P(1) = 0: dropping it
+        # would bias the ratio up) and has no ratio of its own; a threshold where no seed has
+        # one is left out; with the own threshold's P(1) = 0 in every seed the report says it
+        # is not tabulated.
         runs = [{"seed": k + 1,
                  "cycles": [{"cycle": n, "perimeter_P": 0.0 if n == 1 else law(n)} for n in range(1, 4)],
-                 "threshold_sensitivity": {"cycles": [
+                 "threshold_sensitivity": {"factors_of_c0": [], "thresholds": [0.2, 0.4], "cycles": [
                      {"cycle": n, "perimeter_P": [law(n) if (k or n > 1) else 0.0, 0.0]}
                      for n in range(1, 4)]}}
                 for k in range(3)]
@@ -311,10 +344,64 @@ class Predictions(unittest.TestCase):
         _, doc, md = self.run_case(1.1, sensitivity=sens, runs=runs)
         rows = doc["threshold_shape"]
         self.assertEqual([r["threshold"] for r in rows], [0.2])
-        self.assertEqual(rows[0]["n_runs"], 2)
+        self.assertEqual(rows[0]["n_runs"], 3)
+        self.assertAlmostEqual(rows[0]["P1_mean"], 2 * law(1) / 3, places=9)
+        for c in rows[0]["cycles"]:
+            self.assertAlmostEqual(c["shape_ratio"], 1.5, places=9)  # law(n) over 2/3 law(1)
+            self.assertIsNone(c["per_run"][0])
+            self.assertAlmostEqual(c["per_run"][1], 1.0, places=9)
         self.assertIn("| 0.200 | 11.5 |", md)
+        self.assertIn("| –, 1.00, 1.00 |", md)
         self.assertNotIn("**0.200", md)
-        self.assertIn("The analysis's own threshold has no cycle 1 with P > 0", md)
+        self.assertIn("The analysis's own threshold has no mean P > 0 at cycle 1", md)
+
+    def test_growth_shape_slots_by_key_and_a_single_seed(self):
+        # Seed 2's table has no 0.5 c0 slot (another analysis version), so that row is the
+        # other two seeds; one seed alone has no error and prints none.
+        runs = []
+        for k in range(3):
+            fs = [1.0] if k == 1 else [0.5, 1.0]
+            runs.append({"seed": k + 1,
+                         "cycles": [{"cycle": n, "perimeter_P": law(n)} for n in range(1, 4)],
+                         "threshold_sensitivity": {
+                             "factors_of_c0": fs, "thresholds": [0.4 * f for f in fs],
+                             "cycles": [{"cycle": n, "perimeter_P": [(1 + k) * law(n) * f for f in fs]}
+                                        for n in range(1, 4)]}})
+        sens = {"factors_of_c0": [0.5, 1.0], "thresholds_mean": [0.2, 0.4]}
+        _, doc, md = self.run_case(1.1, sensitivity=sens, runs=runs)
+        half = [r for r in doc["threshold_shape"] if r["factor_of_c0"] == 0.5][0]
+        self.assertEqual(half["n_runs"], 2)
+        self.assertAlmostEqual(half["P1_mean"], (0.5 + 1.5) * law(1) / 2, places=9)
+        _, doc, md = self.run_case(1.1, runs=runs[:1])
+        own = doc["threshold_shape"][0]
+        self.assertIsNone(own["P1_sem"])
+        self.assertIsNone(own["cycles"][0]["sigma"])
+        self.assertIn(f"| {law(1):.2f} | 1.00 | 1.00 |", md)
+        self.assertNotIn("± –", md)
+
+    def test_ratio_of_means_delta_method(self):
+        sys.path.insert(0, os.path.join(REPO, "pipeline", "calibration"))
+        from predictions import ratio_of_means
+        # mean(y) = 0: the ratio is 0 and its error var y / (n mean(x)^2), not undefined.
+        r, sig = ratio_of_means([1.0, 2.0, 3.0], [1.0, -1.0, 0.0])
+        self.assertEqual(r, 0.0)
+        self.assertAlmostEqual(sig, math.sqrt(1.0 / (3 * 4.0)), places=12)
+        # Against re-drawn seeds: the spread of mean(y)/mean(x) over many ensembles of 3 runs
+        # with correlated x, y matches the formula's expectation to a few per cent.
+        import random
+        import statistics
+        rng = random.Random(5)
+        ratios, sigs = [], []
+        for _ in range(4000):
+            xs, ys = [], []
+            for _ in range(50):
+                x = rng.gauss(10.0, 1.0)
+                xs.append(x)
+                ys.append(2.0 * x + rng.gauss(0.0, 1.0) - 15.0)
+            r, sig = ratio_of_means(xs, ys)
+            ratios.append(r)
+            sigs.append(sig)
+        self.assertAlmostEqual(statistics.fmean(sigs) / statistics.stdev(ratios), 1.0, delta=0.05)
 
     def test_without_a_sensitivity_table_only_the_own_threshold(self):
         _, doc, md = self.run_case(1.1)
