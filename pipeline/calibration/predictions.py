@@ -31,7 +31,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
 from common import (add_figure_args, die, experiment, figure_output, load_ensemble,  # noqa: E402
-                    load_json, save_figure)
+                    load_json, ratio_of_means, save_figure)
 
 P_BAND = 0.20        # P(n) within ±20 % of the law
 N0_FACTOR = 1.5      # n0 within a factor 1.5
@@ -71,22 +71,6 @@ def facet_rows(ens):
                      "single_triangle_fraction": c.get("single_triangle_fraction_mean"),
                      "n_facets": c.get("n_facets_mean")})
     return rows
-
-
-def ratio_of_means(xs, ys):
-    """mean(ys) / mean(xs) over paired runs, and its standard error by the delta method with the
-    runs' covariance: P(n) and P(1) of one run are correlated (either way), so their s.e.m. do
-    not add as if independent. var R = (var y - 2 R cov(x, y) + R^2 var x) / (n mean(x)^2), which
-    holds for mean(y) = 0 too. Needs mean(x) > 0; None for the error with fewer than two runs."""
-    n = len(xs)
-    mx, my = statistics.fmean(xs), statistics.fmean(ys)
-    r = my / mx
-    if n < 2:
-        return r, None
-    vx, vy = statistics.variance(xs), statistics.variance(ys)
-    cov = statistics.covariance(xs, ys)
-    var = (vy - 2 * r * cov + r * r * vx) / (n * mx * mx)
-    return r, math.sqrt(max(var, 0.0))
 
 
 def sensitivity_keys(ts):

@@ -1,11 +1,13 @@
 """Helpers shared by the pipeline's plot and report scripts: input checks that fail with a clear
 message, the ensemble file of `crumple-analyze ensemble`, the figure output (-o FILE and
 --format png|svg, saved alike by every plot script), the experimental constants from data/ and
-the law they give, and the fragmentation-model density phi(xi; a) of docs/STATISTICS.md §3.3."""
+the law they give, the fragmentation-model density phi(xi; a) of docs/STATISTICS.md §3.3, and
+the error of a ratio of means over paired runs."""
 import csv
 import json
 import math
 import os
+import statistics
 import sys
 
 REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
@@ -135,3 +137,19 @@ def sweep_groups(points):
         if p["group"] not in order:
             order.append(p["group"])
     return order
+
+
+def ratio_of_means(xs, ys):
+    """mean(ys) / mean(xs) over paired runs, and its standard error by the delta method with the
+    runs' covariance: P(n) and P(1) of one run are correlated (either way), so their s.e.m. do
+    not add as if independent. var R = (var y - 2 R cov(x, y) + R^2 var x) / (n mean(x)^2), which
+    holds for mean(y) = 0 too. Needs mean(x) > 0; None for the error with fewer than two runs."""
+    n = len(xs)
+    mx, my = statistics.fmean(xs), statistics.fmean(ys)
+    r = my / mx
+    if n < 2:
+        return r, None
+    vx, vy = statistics.variance(xs), statistics.variance(ys)
+    cov = statistics.covariance(xs, ys)
+    var = (vy - 2 * r * cov + r * r * vx) / (n * mx * mx)
+    return r, math.sqrt(max(var, 0.0))
