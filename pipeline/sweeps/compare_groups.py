@@ -95,7 +95,8 @@ def compare(base, var):
 
 def fit_of(ens):
     f = ((ens.get("fits") or {}).get("perimeter_P") or {}).get("increments") or {}
-    return {k: f.get(k) for k in ("n0", "sigma_n0", "c1", "sigma_c1", "c2", "sigma_c2")}
+    return {k: f.get(k) for k in ("n0", "sigma_n0", "c1", "sigma_c1", "c2", "sigma_c2",
+                                  "at_bound")}
 
 
 def pm(v, s, fmt=".2f"):
@@ -133,6 +134,11 @@ def report(doc):
           f"the experiments' n0 = {doc['law_n0']:.2f}, c1 = 52 and c2 = 0.1:" if doc["law_n0"] else "", "",
           "| group | n0 | c1 | c2 |", "| --- | --- | --- | --- |"]
     for label, f in ((b, doc["baseline_fit"]), (v, doc["variant_fit"])):
+        if f.get("at_bound"):
+            # n0 on the edge of its search: the increments fall faster than any n0 in range
+            # describes (or slower), and c1, c2 computed from it mean nothing.
+            L.append(f"| {label} | {f['n0']:.3g} (on its search bound: not determined) | – | – |")
+            continue
         L.append(f"| {label} | {pm(f['n0'], f['sigma_n0'])} | {pm(f['c1'], f['sigma_c1'], '.1f')} | "
                  f"{pm(f['c2'], f['sigma_c2'], '.3f')} |")
     L.append("")

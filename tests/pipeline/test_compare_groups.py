@@ -24,7 +24,7 @@ def law(n):
     return 52 * (1 - D) * math.log1p(0.1 * n / D)
 
 
-def ensemble(path, per_seed, compaction=D, n0=1.0):
+def ensemble(path, per_seed, compaction=D, n0=1.0, at_bound=False):
     """per_seed: {seed: [P at cycles 1..N]}."""
     runs = [{"seed": s, "cycles": [{"cycle": i + 1, "perimeter_P": p} for i, p in enumerate(ps)]}
             for s, ps in per_seed.items()]
@@ -32,7 +32,7 @@ def ensemble(path, per_seed, compaction=D, n0=1.0):
            "compaction": compaction, "n_runs": len(runs), "seeds": list(per_seed),
            "fits": {"perimeter_P": {"increments": {"n0": n0, "sigma_n0": 0.5, "c1": 20.0,
                                                     "sigma_c1": 5.0, "c2": D / n0,
-                                                    "sigma_c2": 0.05}}}}
+                                                    "sigma_c2": 0.05, "at_bound": at_bound}}}}
     with open(path, "w") as f:
         json.dump(doc, f)
     return path
@@ -61,7 +61,8 @@ class CompareGroups(unittest.TestCase):
             base = ensemble(os.path.join(tmp, "a.json"),
                             {s: [0.7 * law(n) * k for n in range(1, 6)] for s, k in SCALE.items()})
             var = ensemble(os.path.join(tmp, "b.json"),
-                           {s: [1.2 * 0.7 * law(n) * k for n in range(1, 6)] for s, k in SCALE.items()})
+                           {s: [1.2 * 0.7 * law(n) * k for n in range(1, 6)] for s, k in SCALE.items()},
+                           n0=1e-6, at_bound=True)
             r, doc, md = run(tmp, base, var)
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertEqual(doc["seeds"], [1, 2, 3])
@@ -75,6 +76,8 @@ class CompareGroups(unittest.TestCase):
                     self.assertAlmostEqual(row["shape_change"], 0.0, places=12)
             self.assertIn("| 5 | 39.8 |", md)
             self.assertIn("1.20 ± 0.00 *", md)
+            self.assertIn("| protocol | 1.00 ± 0.50 | 20.0 ± 5.0 | 0.270 ± 0.050 |", md)
+            self.assertIn("| flatter | 1e-06 (on its search bound: not determined) | – | – |", md)
 
     def test_a_steeper_growth_is_a_change_of_shape(self):
         # The variant's P(n) is the baseline's times 1 + 0.1 (n - 1): its shape over the law's
