@@ -11,7 +11,9 @@
 // bend those with |p| > c0 back past yield, erasing the creases of earlier cycles (measured at
 // 1500 nodes with the earlier 0.1 ks tethers: the roll cut the crease length at 0.5 c0 by up to
 // 55 L0 and left no |p| above 0.37). The axis direction is drawn at random each cycle (the
-// experiment re-rolls the flattened sheet by hand) unless `axis: fixed`. On completion the stage
+// experiment re-rolls the flattened sheet by hand) unless `axis: fixed`, or drawn between the
+// sheet's two sides with `axis: side` (rolled edge to edge; the sources do not say which way the
+// experimenters rolled, docs/studies/roll_axis/). On completion the stage
 // records the roll's axis, radius and height H0 for the compress stage and removes its tethers.
 #include "protocols/stages/common.hpp"
 #include "protocols/terms/tether_term.hpp"
@@ -20,6 +22,7 @@
 #include <random>
 #include <algorithm>
 #include <sstream>
+#include <string>
 
 namespace crumple::stages {
 namespace {
@@ -29,7 +32,7 @@ class RollStage : public Stage {
   explicit RollStage(const StageArgs& a)
       : radius_(a.number("radius")),
         wrap_(a.number("wrap")),
-        random_axis_(a.text("axis") == "random"),
+        axis_mode_(a.text("axis")),
         angle_(a.number("angle") * M_PI / 180.0),
         duration_(a.number("duration")),
         flatten_length_(a.number("flatten_length")),
@@ -43,7 +46,13 @@ class RollStage : public Stage {
   void begin(StageContext& ctx) override {
     const Mesh& m = ctx.model->mesh();
     double phi = angle_;
-    if (random_axis_) phi = std::uniform_real_distribution<double>(0.0, M_PI)(ctx.rng);
+    if (axis_mode_ == "random") {
+      phi = std::uniform_real_distribution<double>(0.0, M_PI)(ctx.rng);
+    } else if (axis_mode_ == "side") {
+      // One of the square sheet's two sides, as a hand rolls it edge to edge (phi and phi + pi
+      // give the same roll).
+      if (std::uniform_real_distribution<double>(0.0, 1.0)(ctx.rng) < 0.5) phi += 0.5 * M_PI;
+    }
     a_ = Vec3(std::cos(phi), std::sin(phi), 0.0);
     b_ = Vec3(-std::sin(phi), std::cos(phi), 0.0);
     const Vec3 c = reference_centroid(m);
@@ -124,7 +133,7 @@ class RollStage : public Stage {
 
  private:
   double radius_, wrap_;
-  bool random_axis_;
+  std::string axis_mode_;  // random, fixed or side
   double angle_, duration_, flatten_length_, tolerance_, threshold_, speed_, xi_ = 0;
   Vec3 a_, b_, origin_;
   double R_ = 0, height_ = 0, wmid_ = 0, t0_ = 0;
@@ -143,9 +152,11 @@ StageType roll_stage_type() {
       {"radius", K::Number, "0", "roll radius; 0: the sheet's width/(2 pi wrap)", 0.0},
       {"wrap", K::Number, "0.9", "fraction of a full turn the sheet covers when radius = 0", 0.05,
        1.0},
-      {"axis", K::Text, "random", "roll axis: drawn uniformly each cycle, or fixed at `angle`", 0,
-       0, false, {"random", "fixed"}},
-      {"angle", K::Number, "0", "axis angle from the x axis in degrees (axis: fixed)"},
+      {"axis", K::Text, "random",
+       "roll axis: drawn uniformly each cycle, fixed at `angle`, or side: `angle` or `angle` + 90 "
+       "degrees, drawn each cycle",
+       0, 0, false, {"random", "fixed", "side"}},
+      {"angle", K::Number, "0", "axis angle from the x axis in degrees (axis: fixed or side)"},
       {"duration", K::Number, "0.2", "time to bend from flat to the full roll (s)", 0.0, 1e30,
        true},
       {"flatten_length", K::Number, "0.05",

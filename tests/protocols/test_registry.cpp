@@ -64,7 +64,8 @@ TEST(StageRegistry, WrongTypeAndBadChoice) {
 TEST(StageRegistry, ValidStagesBuildAndDescribe) {
   EXPECT_EQ(error_of("type: compress\ncompaction: 0.27\nspeed: 0.02\n"), "");
   EXPECT_EQ(error_of("type: roll\naxis: fixed\nangle: 30\n"), "");
+  EXPECT_EQ(error_of("type: roll\naxis: side\n"), "");
   const std::string d = StageRegistry::builtin().describe();
   EXPECT_NE(d.find("compaction (required)"), std::string::npos);
-  EXPECT_NE(d.find("axis = random {random|fixed}"), std::string::npos);
+  EXPECT_NE(d.find("axis = random {random|fixed|side}"), std::string::npos);
 }

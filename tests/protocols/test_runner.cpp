@@ -88,6 +88,30 @@ TEST(Stages, RollPutsEveryNodeOnTheCylinder) {
               1e-12);
 }
 
+// axis: side draws each cycle's roll axis between the sheet's two sides, `angle` and `angle` +
+// 90 degrees, and nothing in between (docs/studies/roll_axis/): over eight seeded cycles both
+// sides occur and every axis is one of them.
+TEST(Stages, RollAboutARandomSide) {
+  ProtocolRun r(R"([{type: roll, duration: 0.2, radius: 0.05, axis: side, angle: 10},
+                    {type: unfold, open_time: 0.1, max_duration: 0.3}])");
+  r.go(8);
+  const Vec3 s0(std::cos(M_PI / 18), std::sin(M_PI / 18), 0);
+  const Vec3 s1(-std::sin(M_PI / 18), std::cos(M_PI / 18), 0);
+  int rolls = 0, first = 0, second = 0;
+  for (const Checkpoint& c : r.sink.checkpoints) {
+    if (!c.apparatus.rolled || c.stage != 1 || c.in_stage) continue;  // as the roll ended
+    ++rolls;
+    const Vec3 a = c.apparatus.axis_dir;
+    const bool on0 = std::abs(std::abs(a.dot(s0)) - 1.0) < 1e-12;
+    const bool on1 = std::abs(std::abs(a.dot(s1)) - 1.0) < 1e-12;
+    EXPECT_TRUE(on0 || on1) << "axis " << a.transpose() << " is along neither side";
+    first += on0, second += on1;
+  }
+  EXPECT_EQ(rolls, 8);
+  EXPECT_GT(first, 0);
+  EXPECT_GT(second, 0);
+}
+
 TEST(Stages, CompressStaysInsideAndReachesTheTarget) {
   ProtocolRun r(R"([{type: roll, duration: 0.2}, {type: compress, compaction: 0.4, speed: 0.2,
              clearance: 0.15, retract: false}])");
