@@ -150,7 +150,7 @@ def main():
         b = f"{meta.get('program_version', '?')} ({meta.get('git_revision', '?')})"
         builds[b] = builds.get(b, 0) + 1
     program = ("program " + next(iter(builds)) if len(builds) == 1 else
-               "programs " + "; ".join(f"{b} for {n} runs" for b, n in builds.items()))
+               "programs " + "; ".join(f"{b} for {n} run{'' if n == 1 else 's'}" for b, n in builds.items()))
 
     L = []
     add = L.append
@@ -165,7 +165,7 @@ def main():
     for g in pts["grid"]:
         add(f"- grid: `{g['key']}` ∈ {{{', '.join(g['values'])}}}")
     add(f"- seeds: {', '.join(str(s) for s in pts['seeds'])}; {len(pts['points'])} runs in "
-        f"{len(groups)} groups; {program}")
+        f"{len(groups)} group{'' if len(groups) == 1 else 's'}; {program}")
     rest = [s for s in pts.get("sweep_seeds", pts["seeds"]) if s not in pts["seeds"]]
     if rest:
         add(f"- **part of the sweep**: seeds {', '.join(rest)} of the sweep file are not run yet "
