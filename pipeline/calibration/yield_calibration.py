@@ -112,7 +112,7 @@ def interpolate(rows, target, kind):
 
     def beats(i, j):
         """Row i closer to the target than row j by more than 2 combined s.e.m."""
-        return dist[j] - dist[i] > 2 * math.hypot(rows[i]["P_sem"] or 0.0, rows[j]["P_sem"] or 0.0)
+        return dist[j] - dist[i] > 2 * math.hypot(rows[i]["P_sem"], rows[j]["P_sem"])
 
     if 0 < k < len(rows) - 1:
         # The turn is shown when some inner value beats both ends (not necessarily the closest,
@@ -280,6 +280,12 @@ def main():
     rows = yield_rows(points, a.groups, key)
     if len(rows) < 2:
         die(f"{a.points}: the calibration needs at least two values of {key}, got {len(rows)}")
+    lone = [r["group"] for r in rows if r["P_sem"] is None]
+    if lone:
+        # The calibrated value's error, and whether P turns inside the grid, need each value's
+        # s.e.m.; a single seed has none.
+        die(f"{a.points}: groups {', '.join(lone)} have no s.e.m. of P (a single seed): the "
+            f"calibration needs at least two seeds per value of {key}")
     ds = {r["compaction"] for r in rows}
     if len(ds) != 1 or None in ds:
         die(f"the groups were crumpled to different or unknown compactions {sorted(map(str, ds))}")

@@ -63,7 +63,11 @@ def convergence_section(add, doc):
         "converge monotonically, else assumed 1; no estimate where the step between the finest "
         "rungs is no smaller than the one before, or where the extrapolation leaves the "
         "quantity's range). A step between the finest two rungs within "
-        "twice their combined s.e.m. is marked *noise*: the seeds do not resolve it.\n")
+        "twice their combined s.e.m. is marked *noise*: the seeds do not resolve it. The s.e.m. "
+        "of the estimate and of each error is the spread (half the central 68 %) of ladders "
+        "re-drawn within the rungs' s.e.m.; an estimate marked *unstable (x %)* is one whose "
+        "method (observed or assumed order, or an estimate at all) changes in x % of them; "
+        "where more than 16 % of them have no estimate, no rung is shown within a tolerance.\n")
     add("| rung | nodes | h (mm) | runs (seeds) |")
     add("| --- | --- | --- | --- |")
     for r in rungs:
@@ -81,6 +85,7 @@ def convergence_section(add, doc):
             cells = [f"{pm(g['mean'], g['sem'])}<br>{pct(g['rel_error'])}" for g in row["rungs"]]
             est = (pm(row["estimate"], row["estimate_sem"])
                    + {True: "", False: " *noise*", None: " (no s.e.m.)"}[row.get("finest_step_resolved", True)]
+                   + unstable_note(row.get("redrawn"))
                    if row.get("estimate") is not None else
                    "– (extrapolates out of range)" if "leaves the quantity's range" in row["method"]
                    else "– (no convergence seen)" if row["method"].startswith("no convergence")
@@ -116,6 +121,14 @@ def convergence_section(add, doc):
             "*noise*, the rungs' errors are less certain than their quoted s.e.m."
             + (f" Largest |error| + 2 s.e.m. of P over the cycles: {bound}." if bound else "")
             + cover + "\n")
+
+
+def unstable_note(redrawn):
+    """' *unstable (x %)*' for an estimate whose method the re-drawn ladders change, else ''."""
+    if not redrawn or redrawn.get("stable", True):
+        return ""
+    share = redrawn["no_estimate_share"] + redrawn["other_method_share"]
+    return f" *unstable ({100 * share:.0f} %)*"
 
 
 def t_coverage(k, nu):

@@ -11,11 +11,15 @@ it is accepted when the differences keep their sign and 0.5 <= p <= 4, and the e
 Q* = Q3 + (Q3 - Q2) / ((h2/h3)^p - 1) from the finest two. When the step between the finest
 rungs is no smaller than the one before (same sign), nothing converges yet and there is no
 estimate. Otherwise (two rungs, or a non-monotone or out-of-range order) p = 1 is assumed and
-the row says so; with a single rung there is no estimate. The errors are propagated to first
-order in the rungs' s.e.m. (independent ensembles) through the estimate itself, differentiated
-numerically: Q*'s s.e.m., and each rung's relative error (Q - Q*) / Q* with its s.e.m., which
+the row says so; with a single rung there is no estimate. The errors come from the ladder
+re-drawn 4000 times, each rung's mean normal about itself with its s.e.m. (independent
+ensembles), and the estimate made again each time: Q*'s s.e.m., and each rung's relative error
+(Q - Q*) / Q* with its s.e.m., as half the central 68 % interval of the re-drawn values. That
 counts the rung's own noise, Q*'s (including the observed order's, so the third-finest rung
-enters too) and their correlation where the rung is one Q* is made from. Where the
+enters too), their correlation where the rung is one Q* is made from, and, where the s.e.m. is
+as large as the steps between rungs, re-drawn ladders whose method changes (observed <-> assumed
+order, or no estimate): a row whose method fewer than 84 % of them keep is marked unstable, and
+one that fewer than 84 % of them give an estimate shows no rung within a tolerance. Where the
 change between the finest two rungs is within twice their combined s.e.m. the row says the
 difference is not resolved by the seeds (the extrapolation is then mostly noise).
 
@@ -35,6 +39,9 @@ import json
 import math
 import os
 import sys
+import zlib
+
+import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
 from common import die, load_ensemble, load_json, sweep_groups  # noqa: E402
@@ -65,7 +72,7 @@ def solve_order(h, q):
     lo, hi = ORDER_RANGE
     if g(lo) * g(hi) > 0:
         return None
-    for _ in range(100):  # g rises with p for h1 > h2 > h3
+    for _ in range(60):  # g rises with p for h1 > h2 > h3
         mid = 0.5 * (lo + hi)
         if g(lo) * g(mid) <= 0:
             hi = mid
@@ -112,69 +119,78 @@ def extrapolate(rungs):
             "finest_step_resolved": resolved, "extrapolation_k": k}
 
 
-def estimate_gradient(rungs, est):
-    """dQ*/dQ_j for every rung j (coarse to fine), by central differences through `extrapolate`
-    itself: with an observed order, Q* depends on the finest three rungs through p as well as on
-    the finest two directly, and differentiating the function that makes Q* carries all of it.
-    A side whose perturbed ladder changes method (observed <-> assumed order) is not used; None
-    when neither side keeps it (Q* is then not differentiable there)."""
-    grad = []
-    for j, (h, m, s) in enumerate(rungs):
-        if m is None or not math.isfinite(m):
-            grad.append(0.0)  # not part of the ladder extrapolate sees
+REDRAWS = 4000
+# Half the central 68.27 % interval of the re-drawn values: one standard deviation for a normal
+# spread, and not blown up by the few re-drawn ladders whose order lands near the bottom of its
+# range and throws Q* far away.
+CENTRAL = (15.865, 84.135)
+# A method (observed or assumed order, or an estimate at all) kept by fewer than this share of
+# the re-drawn ladders changes within one s.e.m. of the rungs: the estimate is then partly a
+# choice the seeds' noise makes (marked unstable); where fewer than this share have an estimate
+# at all, no rung is shown within a tolerance by it.
+STABLE_SHARE = 0.84
+
+
+def used_rungs(ladder):
+    """Indices of the rungs `extrapolate` can depend on: the finest three with a mean (the third
+    through the order, observed or, when its ladder does not converge, assumed)."""
+    finite = [i for i, (_, m, _) in enumerate(ladder) if m is not None and math.isfinite(m)]
+    return finite[-3:]
+
+
+def half_width(values):
+    lo, hi = np.percentile(values, CENTRAL)
+    return float(0.5 * (hi - lo))
+
+
+def redraw(ladder, est, unit, seed):
+    """The errors of Q* and of every rung's relative error r_i = Q_i / Q* - 1, from the ladder
+    re-drawn REDRAWS times with each rung's mean normal about itself with its s.e.m. (the rungs
+    are independent ensembles). Q* is not linear in the rungs once the order is observed, and
+    where the s.e.m. is as large as the steps between rungs (three seeds) a re-drawn ladder may
+    change method (observed <-> assumed order) or have no estimate at all, which a derivative at
+    the means cannot see; the re-drawn spread counts all of it, including Q* in r_i's
+    denominator and its correlation with the rungs it is made from.
+
+    Returns (estimate_sem, [rel_error_sem per rung], summary) with the s.e.m. as half the central
+    68 % interval of the re-drawn values that have an estimate, and summary the shares of
+    re-drawn ladders with no estimate or another method. A missing s.e.m. at a rung Q* uses
+    leaves Q*'s s.e.m. and every error unknown; one at another rung only that rung's error."""
+    n = len(ladder)
+    used = used_rungs(ladder)
+    if any(ladder[i][2] is None for i in used):
+        return None, [None] * n, None
+    rng = np.random.default_rng(seed)
+    kind = est["order_observed"]
+    estimates, rels = [], []
+    no_est = other = 0
+    noise = rng.standard_normal((REDRAWS, n))
+    for z in noise:
+        moved = [(h, m + s * zj if (s is not None and m is not None and math.isfinite(m)) else m, s)
+                 for (h, m, s), zj in zip(ladder, z)]
+        got = within_range(extrapolate(moved), unit)
+        e = got.get("estimate")
+        if e is None or e == 0:
+            no_est += 1
             continue
-        d = 1e-6 * max(abs(m), abs(est["estimate"]), 1e-300)
-        sides = []
-        for sign in (1, -1):
-            moved = list(rungs)
-            moved[j] = (h, m + sign * d, s)
-            e = extrapolate(moved)
-            if e.get("estimate") is not None and e["order_observed"] == est["order_observed"]:
-                sides.append((sign, e["estimate"]))
-        if len(sides) == 2:
-            grad.append((sides[0][1] - sides[1][1]) / (2 * d))
-        elif len(sides) == 1:
-            sign, e = sides[0]
-            grad.append(sign * (e - est["estimate"]) / d)
-        else:
-            return None
-    return grad
-
-
-def propagate(rungs, est):
-    """The s.e.m. of Q* and of every rung's relative error r_i = Q_i / Q* - 1, to first order in
-    the rungs' s.e.m. (the rungs are independent ensembles, so their variances add):
-        var Q*  = sum_j (dQ*/dQ_j s_j)^2,
-        var r_i = sum_j ((delta_ij - r'_i dQ*/dQ_j) s_j / Q*)^2  with r'_i = Q_i / Q*,
-    which keeps the order's own noise, the rungs Q* is made from (the finest two, and the third
-    through an observed order; a rung inside Q* is not independent of it) and the denominator.
-    Returns (estimate_sem, [rel_error_sem per rung]); a missing s.e.m. where it counts (a
-    non-zero derivative) makes the figures it enters None."""
-    n = len(rungs)
-    grad = estimate_gradient(rungs, est)
-    if grad is None:
-        return None, [None] * n
-    e = est["estimate"]
-
-    def sem_of(coeffs):
-        total = 0.0
-        for c, (_, _, s) in zip(coeffs, rungs):
-            if c == 0.0:
-                continue
-            if s is None:
-                return None
-            total += (c * s) ** 2
-        return math.sqrt(total)
-
-    est_sem = sem_of(grad)
-    rel = []
-    for i, (_, m, _) in enumerate(rungs):
-        if m is None:
-            rel.append(None)
-            continue
-        coeffs = [((1.0 if j == i else 0.0) - m / e * g) / e for j, g in enumerate(grad)]
-        rel.append(sem_of(coeffs))
-    return est_sem, rel
+        if got["order_observed"] != kind:
+            other += 1
+        estimates.append(e)
+        rels.append([(m / e - 1) if (m is not None and math.isfinite(m)) else math.nan
+                     for _, m, _ in moved])
+    summary = {"redraws": REDRAWS, "no_estimate_share": no_est / REDRAWS,
+               "other_method_share": other / REDRAWS}
+    summary["stable"] = 1 - summary["no_estimate_share"] - summary["other_method_share"] \
+        >= STABLE_SHARE
+    # A change between observed and assumed order is inside the spread; re-drawn ladders with
+    # no estimate are not, and where they are many the spread is not Q*'s.
+    summary["mostly_estimable"] = 1 - summary["no_estimate_share"] >= STABLE_SHARE
+    if len(estimates) < REDRAWS / 2:  # mostly no estimate: no spread to quote
+        return None, [None] * n, summary
+    rels = np.array(rels)
+    rel_sems = [None if (ladder[i][1] is None or not math.isfinite(ladder[i][1])
+                         or ladder[i][2] is None) else half_width(rels[:, i]) for i in range(n)]
+    return half_width(estimates), rel_sems, summary
 
 
 def within_range(est, unit):
@@ -205,13 +221,16 @@ def convergence_row(key, label, unit, cycle, rungs, vals):
     ladder = [(h, m, s) for h, m, s, _ in vals]
     est = within_range(extrapolate(ladder), unit)
     e = est.get("estimate")
-    if e:
-        est["estimate_sem"], rel_sems = propagate(ladder, est)
+    if e is not None and e != 0:
+        # Seeded by the row, so a table made twice is the same table.
+        seed = zlib.crc32(f"{key}/{cycle}".encode())
+        est["estimate_sem"], rel_sems, est["redrawn"] = redraw(ladder, est, unit, seed)
     else:
         est["estimate_sem"], rel_sems = None, [None] * len(vals)
     per_rung = []
     for r, (h, m, s, n), rel_sem in zip(rungs, vals, rel_sems):
-        rel = (m - e) / e if (e and m is not None) else None
+        finite = m is not None and math.isfinite(m)
+        rel = (m - e) / e if (e is not None and e != 0 and finite) else None
         per_rung.append({"nodes": r["nodes"], "h_m": h, "runs": n, "mean": m, "sem": s,
                          "rel_error": rel, "rel_error_sem": rel_sem if rel is not None else None})
     return {"quantity": key, "label": label, "unit": unit, "cycle": cycle, "rungs": per_rung,
@@ -264,18 +283,25 @@ def error_bound(rung, margin):
 def coarsest_within(rows, rungs, key, tol, margin=0.0):
     """The coarsest rung from which on every rung's `key` is within tol of its estimate in every
     cycle (a rung within it while a finer one is not is a crossing, not convergence), or None;
-    with margin k, |error| + k s.e.m. of the error must be (k = 2: shown within the seeds'
-    errors)."""
+    with margin k, |error| + k s.e.m. of the error must be, in rows that keep an estimate under
+    the seeds' noise (k = 2: shown within the seeds' errors)."""
     mine = [r for r in rows if r["quantity"] == key and r.get("estimate") is not None]
     if not mine:
         return None
 
     def ok(i):
-        return all((b := error_bound(r["rungs"][i], margin)) is not None and b <= tol for r in mine)
+        return all((b := error_bound(r["rungs"][i], margin)) is not None and b <= tol
+                   and (not margin or mostly_estimable(r)) for r in mine)
     for i, rung in enumerate(rungs):
         if all(ok(j) for j in range(i, len(rungs))):
             return rung["nodes"]
     return None
+
+
+def mostly_estimable(row):
+    """Whether most ladders re-drawn within the seeds' noise have an estimate (unknown: no), so
+    that the re-drawn spread is the estimate's."""
+    return bool((row.get("redrawn") or {}).get("mostly_estimable"))
 
 
 def largest_error_bound(rows, rungs, key, nodes):

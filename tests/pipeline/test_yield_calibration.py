@@ -170,6 +170,26 @@ class YieldCalibration(unittest.TestCase):
         self.assertNotIn("peak of", err)
         self.assertIn("to 8 mm: add larger values", err)
 
+    def test_a_turn_is_claimed_at_twice_the_combined_sem(self):
+        # The dip of 24 against ends of 30 and 28 (target 12.0): the nearer end is 4 L0 further
+        # from the target, so the dip is shown while 4 > 2 hypot(s, s), s < 1.414.
+        code, err, _, _ = self.run_case({28.0: ensemble(30, 1.40), 30.0: ensemble(24, 1.40),
+                                         34.0: ensemble(28, 1.40)})
+        self.assertEqual(code, 3)
+        self.assertIn("with a dip of 24.00 ± 1.40 L0", err)
+        code, err, _, _ = self.run_case({28.0: ensemble(30, 1.43), 30.0: ensemble(24, 1.43),
+                                         34.0: ensemble(28, 1.43)})
+        self.assertEqual(code, 3)
+        self.assertNotIn("dip of", err)
+
+    def test_a_single_seed_is_refused(self):
+        code, err, doc, _ = self.run_case({28.0: ensemble(30, None), 30.0: ensemble(24, 1.0),
+                                           34.0: ensemble(28, 1.0)})
+        self.assertEqual(code, 2)
+        self.assertIn("at least two seeds per value", err)
+        self.assertIn("yield_angle-28", err)
+        self.assertIsNone(doc)
+
     def test_a_non_monotonic_bracket_is_refused(self):
         code, err, doc, _ = self.run_case({28.0: ensemble(20, 1), 32.0: ensemble(8, 1),
                                            36.0: ensemble(16, 1), 40.0: ensemble(5, 1)})
@@ -386,10 +406,23 @@ class Predictions(unittest.TestCase):
         r, sig = ratio_of_means([1.0, 2.0, 3.0], [1.0, -1.0, 0.0])
         self.assertEqual(r, 0.0)
         self.assertAlmostEqual(sig, math.sqrt(1.0 / (3 * 4.0)), places=12)
-        # Against re-drawn seeds: the spread of mean(y)/mean(x) over many ensembles of 3 runs
-        # with correlated x, y matches the formula's expectation to a few per cent.
+        # The formula is the residuals' variance: with R = mean(y)/mean(x), var(y - R x) over
+        # n mean(x)^2 (sample variance, n - 1), for any data.
         import random
         import statistics
+        rng = random.Random(3)
+        xs = [rng.uniform(5, 15) for _ in range(4)]
+        ys = [3 * x + rng.gauss(0, 2) for x in xs]
+        r, sig = ratio_of_means(xs, ys)
+        mx = statistics.fmean(xs)
+        self.assertAlmostEqual(r, statistics.fmean(ys) / mx, places=12)
+        resid = [y - r * x for x, y in zip(xs, ys)]
+        self.assertAlmostEqual(sig, math.sqrt(statistics.variance(resid) / (len(xs) * mx ** 2)),
+                               places=12)
+        # Against re-drawn seeds: the spread of mean(y)/mean(x) over many ensembles of 50 runs
+        # with correlated x, y (R = 3, where the covariance nearly cancels the variances, so a
+        # term dropped or taken once instead of squared shows) matches the formula's expectation
+        # to a few per cent.
         rng = random.Random(5)
         ratios, sigs = [], []
         for _ in range(4000):
@@ -397,7 +430,7 @@ class Predictions(unittest.TestCase):
             for _ in range(50):
                 x = rng.gauss(10.0, 1.0)
                 xs.append(x)
-                ys.append(2.0 * x + rng.gauss(0.0, 1.0) - 15.0)
+                ys.append(3.0 * x + rng.gauss(0.0, 1.0))
             r, sig = ratio_of_means(xs, ys)
             ratios.append(r)
             sigs.append(sig)
