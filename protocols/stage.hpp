@@ -71,6 +71,11 @@ class Stage {
   /// cycle to cycle may resolve it there). The run file records it per stage end and per cycle,
   /// so the analysis never has to find it in the stored configuration.
   virtual std::optional<double> compaction() const { return std::nullopt; }
+  /// The in-plane axis a stage rolled the sheet about, in degrees from the x axis in [0, 180)
+  /// (a and -a are the same roll), for stages that roll it; nullopt for the others. Valid from
+  /// begin() on. Recorded per stage end: the roll's axis is a random draw of the protocol, and
+  /// which orientations a sheet was rolled in drives its crease growth (docs/studies/roll_side/).
+  virtual std::optional<double> roll_axis_deg() const { return std::nullopt; }
   /// Cap on the stage's simulated duration (the stage ends there even if its target is not
   /// reached; the runner warns).
   double max_duration = 1e30;

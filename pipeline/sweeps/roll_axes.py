@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Each cycle's roll axis, read back from a run file, beside the growth of P in that cycle
-(issue 36: the slow crease growth; docs/studies/roll_side/). The run files of crumple-sim record
-the roll's axis only in the last checkpoint, so it is recovered from the geometry: rolling about
+(issue 36: the slow crease growth; docs/studies/roll_side/). Run files record each roll's axis
+at the stage's end (/stage_ends/NNNNNN@roll_axis_deg, docs/FILE_FORMAT.md); in files written
+before that, it is recovered from the geometry, and for the others the recovered axis is given
+beside the recorded one as a check. Rolling about
 an in-plane axis a keeps every node's coordinate along a (up to a shift) and bends the other, so
 in the frame nearest the end of each roll stage the coordinate x . a is an exact linear function
 of the reference r . a along the axis and a curved one across it. The axis is the direction,
@@ -44,27 +46,34 @@ def axis_of(x, ref):
 
 
 def roll_axes(path):
-    """[(cycle, axis_deg, correlation)] of a run file, one per roll stage."""
+    """[(cycle, recorded axis_deg or None, inferred axis_deg or None, correlation or None)] of a
+    run file, one per roll stage; the geometry is read only where it is there."""
     import h5py
     try:
         f = h5py.File(path, "r")
     except OSError as e:
         die(f"{path}: not a readable run file ({e})")
     with f:
-        if "frames" not in f or "stage_ends" not in f or "mesh/ref_positions" not in f:
-            die(f"{path}: no frames, stage ends or reference positions: not a crumple-sim run file")
-        ref = np.array(f["mesh/ref_positions"])
-        frames = f["frames"]
-        times = {k: float(frames[k].attrs["t"]) for k in frames}
+        if "stage_ends" not in f:
+            die(f"{path}: no stage ends: not a crumple-sim run file (or one too old to tell)")
+        geometry = "frames" in f and "mesh/ref_positions" in f
+        ref = np.array(f["mesh/ref_positions"]) if geometry else None
+        times = {k: float(f["frames"][k].attrs["t"]) for k in f["frames"]} if geometry else {}
         out = []
         for k in sorted(f["stage_ends"]):
             e = f["stage_ends"][k].attrs
             if e["stage"] != "roll":
                 continue
-            t = float(e["t"])
-            nearest = min(times, key=lambda q: abs(times[q] - t))
-            d, r = axis_of(np.array(frames[nearest]["x"]), ref)
-            out.append((int(e["cycle"]), d, r))
+            recorded = float(e["roll_axis_deg"]) if "roll_axis_deg" in e else None
+            d = r = None
+            if times:
+                t = float(e["t"])
+                nearest = min(times, key=lambda q: abs(times[q] - t))
+                d, r = axis_of(np.array(f["frames"][nearest]["x"]), ref)
+            elif recorded is None:
+                die(f"{path}: roll stage end {k} records no axis and the file has no frames and "
+                    "reference positions to recover it from")
+            out.append((int(e["cycle"]), recorded, d, r))
         return out
 
 
@@ -88,11 +97,15 @@ def main():
             P = {c["cycle"]: c["perimeter_P"] for c in json.load(f)["cycles"]}
         axes = roll_axes(path)
         seen = []
-        for cycle, d, r in axes:
+        for cycle, recorded, inferred, r in axes:
+            d = round(recorded, 3) if recorded is not None else inferred
             novelty = min((angle_between(d, s) for s in seen), default=None)
             inc = (P[cycle] - P[cycle - 1] if cycle > 1 and cycle in P and cycle - 1 in P
                    else P.get(cycle))
-            rows.append({"run": path, "cycle": cycle, "axis_deg": d, "fit_correlation": round(r, 6),
+            rows.append({"run": path, "cycle": cycle, "axis_deg": d,
+                         "axis_source": "recorded" if recorded is not None else "inferred",
+                         "inferred_axis_deg": inferred,
+                         "fit_correlation": None if r is None else round(r, 6),
                          "angle_to_earlier_axes_deg": novelty, "P": P.get(cycle),
                          "P_increment": inc})
             seen.append(d)

@@ -14,7 +14,8 @@
 // experiment re-rolls the flattened sheet by hand) unless `axis: fixed`, or drawn between the
 // sheet's two sides with `axis: side` (rolled edge to edge; the sources do not say which way the
 // experimenters rolled, docs/studies/roll_axis/). On completion the stage
-// records the roll's axis, radius and height H0 for the compress stage and removes its tethers.
+// records the roll's axis, radius and height H0 for the compress stage and removes its tethers;
+// the run file records the axis at the stage's end (Stage::roll_axis_deg).
 #include "protocols/stages/common.hpp"
 #include "protocols/terms/tether_term.hpp"
 
@@ -53,6 +54,8 @@ class RollStage : public Stage {
       // give the same roll).
       if (std::uniform_real_distribution<double>(0.0, 1.0)(ctx.rng) < 0.5) phi += 0.5 * M_PI;
     }
+    const double deg = std::fmod(phi * 180.0 / M_PI, 180.0);
+    phi_deg_ = deg < 0 ? deg + 180.0 : deg;
     a_ = Vec3(std::cos(phi), std::sin(phi), 0.0);
     b_ = Vec3(-std::sin(phi), std::cos(phi), 0.0);
     const Vec3 c = reference_centroid(m);
@@ -131,9 +134,12 @@ class RollStage : public Stage {
     return std::clamp((ctx.state->t - t0_) / duration_, 0.0, 1.0);
   }
 
+  std::optional<double> roll_axis_deg() const override { return phi_deg_; }
+
  private:
   double radius_, wrap_;
   std::string axis_mode_;  // random, fixed or side
+  std::optional<double> phi_deg_;  // the axis drawn in begin()
   double angle_, duration_, flatten_length_, tolerance_, threshold_, speed_, xi_ = 0;
   Vec3 a_, b_, origin_;
   double R_ = 0, height_ = 0, wmid_ = 0, t0_ = 0;

@@ -38,7 +38,8 @@ class FileSink : public RunSink {
     const double wall = since(last_stage_end_) - (output_s_ - output_at_stage_end_);
     last_stage_end_ = Clock::now();
     output_at_stage_end_ = output_s_;
-    rec_.stage_ends.push_back({cycle, index, stage.type(), s.t, s.p, wall, stage.compaction()});
+    rec_.stage_ends.push_back(
+        {cycle, index, stage.type(), s.t, s.p, wall, stage.compaction(), stage.roll_axis_deg()});
   }
   void cycle_end(int cycle, const State& s) override {
     CycleRecord c;

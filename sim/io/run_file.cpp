@@ -418,6 +418,7 @@ void write_all(H5::H5File& file, const RunRecord& r) {
     h5::attr(g, "stage_index", std::int64_t{e.stage_index});
     h5::attr(g, "wall", e.wall);
     if (e.compaction) h5::attr(g, "compaction", *e.compaction);
+    if (e.roll_axis_deg) h5::attr(g, "roll_axis_deg", *e.roll_axis_deg);
   }
   H5::Group log = h5::group(root, "log");
   h5::write(log, "t", log_column(r.log, [](const LogRow& x) { return x.t; }));
@@ -531,6 +532,7 @@ RunRecord read_run_file(const std::string& path) {
         e.stage_index = static_cast<int>(h5::attr_int(g, "stage_index"));
         if (g.attrExists("wall")) e.wall = h5::attr_double(g, "wall");  // else NaN (older file)
         if (g.attrExists("compaction")) e.compaction = h5::attr_double(g, "compaction");
+        if (g.attrExists("roll_axis_deg")) e.roll_axis_deg = h5::attr_double(g, "roll_axis_deg");
         check.length("/stage_ends/" + name + "/p", e.p, m, "one per hinge");
         r.stage_ends.push_back(std::move(e));
       }

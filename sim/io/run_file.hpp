@@ -56,6 +56,9 @@ struct StageEndRecord {
   /// The compaction ratio the stage imposed (Stage::compaction()); absent for stages that do
   /// not compact the sheet and in files written before it was recorded.
   std::optional<double> compaction;
+  /// The axis the stage rolled the sheet about (Stage::roll_axis_deg()), degrees in [0, 180);
+  /// absent for stages that do not roll it and in files written before it was recorded.
+  std::optional<double> roll_axis_deg;
 };
 
 /// The compaction ratio of cycle `cycle` from its stage ends: the smallest (the strongest

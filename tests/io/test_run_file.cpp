@@ -40,6 +40,7 @@ TEST(RunFile, RoundTripIsExact) {
   CycleRecord c{1, 2.5, random_vec(n3), random_vec(nh), 0.35};
   r.cycles.push_back(c);
   r.stage_ends.push_back({1, 0, "roll", 0.2, random_vec(nh)});
+  r.stage_ends.back().roll_axis_deg = 123.5;
   r.stage_ends.push_back({1, 1, "compress", 1.25, random_vec(nh), 12.5, 0.35});
   LogRow row;
   row.t = 0.3, row.h = 1e-3, row.mode = 1, row.newton_iters = 2, row.cg_iters = 40, row.e_bend = 7;
@@ -90,6 +91,8 @@ TEST(RunFile, RoundTripIsExact) {
   EXPECT_TRUE(std::isnan(q.stage_ends[0].wall));  // not measured: stays NaN
   EXPECT_EQ(q.stage_ends[1].compaction, r.stage_ends[1].compaction);
   EXPECT_FALSE(q.stage_ends[0].compaction.has_value());  // the roll compacts nothing
+  EXPECT_EQ(q.stage_ends[0].roll_axis_deg, 123.5);
+  EXPECT_FALSE(q.stage_ends[1].roll_axis_deg.has_value());  // the compress rolls nothing
   ASSERT_EQ(q.log.size(), 2u);
   EXPECT_EQ(q.log[1].cg_iters, 40);
   EXPECT_EQ(q.log[1].e_bend, 7);

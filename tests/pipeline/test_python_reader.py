@@ -65,6 +65,13 @@ class Reader(unittest.TestCase):
         self.assertEqual(list(run.cycles["cycle"]), [1, 2])
         self.assertEqual(list(run.cycles["compaction"]), [0.5, 0.5])
         self.assertEqual(list(run.stage_ends["stage"]), ["roll", "compress"] * 2)
+        # Each roll's axis (a random draw) as recorded; none for the compress stages.
+        axes = run.stage_ends["roll_axis_deg"]
+        with h5py.File(self.run_path, "r") as f:
+            want = [f["stage_ends"][k].attrs.get("roll_axis_deg", np.nan) for k in sorted(f["stage_ends"])]
+        np.testing.assert_array_equal(axes.to_numpy(), np.array(want))
+        self.assertTrue(all(0 <= a < 180 for a in axes[::2]))
+        self.assertTrue(axes[1::2].isna().all())
         self.assertEqual(run.config["material"]["yield_radius"], 0.02)
         # Units: on the arrays and on every column of every table.
         self.assertEqual(run.units["x"], "m")

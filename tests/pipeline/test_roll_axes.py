@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """pipeline/sweeps/roll_axes.py on run files written here: a square sheet rolled (exactly, as
 the roll stage's target) about axes of 30, 30 and 120 degrees in three cycles, with other stages'
-frames between; the axes come back to the degree, the second roll is 0 degrees from an earlier
+frames between; the axes come back to the degree (or, recorded at the roll's end, as recorded, with
+the recovered axis beside them), the second roll is 0 degrees from an earlier
 one and the third 90, each beside its increment of P; a file that is not a run is refused.
 
 usage: test_roll_axes.py   (from the repository root)
@@ -32,7 +33,9 @@ def rolled(ref, deg, R=0.0177, shift=(0.01, -0.02)):
     return np.column_stack([xy, (1 - np.cos(k * u)) / k])
 
 
-def write_run(path, axes, P):
+def write_run(path, axes, P, recorded=None):
+    """recorded: the axes as a newer crumple-sim records them at each roll's end, or None (an
+    older file)."""
     g = np.linspace(-0.05, 0.05, 21)
     ref = np.array([(x, y, 0.0) for x in g for y in g])
     rng = np.random.default_rng(3)
@@ -51,6 +54,8 @@ def write_run(path, axes, P):
                 se.attrs["cycle"] = c
                 se.attrs["stage"] = stage
                 se.attrs["t"] = t
+                if recorded is not None and stage == "roll":
+                    se.attrs["roll_axis_deg"] = recorded[c - 1]
                 k += 1
     an = os.path.splitext(path)[0] + ".analysis"
     os.makedirs(an)
@@ -74,6 +79,22 @@ class RollAxes(unittest.TestCase):
             self.assertEqual([float(x["P_increment"]) for x in rows], [10.0, 1.5, 13.5])
             self.assertIn("new axis 30-90 degrees from every earlier one: 1 cycles, mean P "
                           "increment 13.50", r.stdout)
+
+    def test_a_recorded_axis_is_used_and_checked(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            run = os.path.join(tmp, "seed1.h5")
+            write_run(run, [30, 30, 120], [10.0, 11.5, 25.0], recorded=[30.25, 29.8, 120.4])
+            out = os.path.join(tmp, "axes.csv")
+            r = subprocess.run([sys.executable, SCRIPT, run, "-o", out], capture_output=True,
+                               text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(out) as f:
+                rows = list(csv.DictReader(f))
+            self.assertEqual([float(x["axis_deg"]) for x in rows], [30.25, 29.8, 120.4])
+            self.assertEqual({x["axis_source"] for x in rows}, {"recorded"})
+            self.assertEqual([int(x["inferred_axis_deg"]) for x in rows], [30, 30, 120])
+            self.assertAlmostEqual(float(rows[1]["angle_to_earlier_axes_deg"]), 0.45, places=9)
+            self.assertAlmostEqual(float(rows[2]["angle_to_earlier_axes_deg"]), 89.4, places=9)
 
     def test_not_a_run_file(self):
         with tempfile.TemporaryDirectory() as tmp:

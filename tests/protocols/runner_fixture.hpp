@@ -46,6 +46,7 @@ struct MemorySink : RunSink {
     std::string type;
     State state;
     std::optional<double> compaction;  ///< what the stage reported (Stage::compaction())
+    std::optional<double> roll_axis_deg;  ///< likewise (Stage::roll_axis_deg())
   };
   std::vector<StageEnd> stage_ends;
   int kill_after = -1;  ///< throw Killed after this many checkpoints (simulates SIGKILL)
@@ -55,7 +56,7 @@ struct MemorySink : RunSink {
     frame_stages.push_back(stage);
   }
   void stage_end(int cycle, int index, const Stage& stage, const State& s) override {
-    stage_ends.push_back({cycle, index, stage.type(), s, stage.compaction()});
+    stage_ends.push_back({cycle, index, stage.type(), s, stage.compaction(), stage.roll_axis_deg()});
   }
   void cycle_end(int, const State& s) override { cycles.push_back(s); }
   void checkpoint(const Checkpoint& c) override {

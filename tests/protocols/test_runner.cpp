@@ -90,7 +90,8 @@ TEST(Stages, RollPutsEveryNodeOnTheCylinder) {
 
 // axis: side draws each cycle's roll axis between the sheet's two sides, `angle` and `angle` +
 // 90 degrees, and nothing in between (docs/studies/roll_axis/): over eight seeded cycles both
-// sides occur and every axis is one of them.
+// sides occur and every axis is one of them; the stage reports each cycle's axis as it rolled
+// (what the run file records), and the unfold reports none.
 TEST(Stages, RollAboutARandomSide) {
   ProtocolRun r(R"([{type: roll, duration: 0.2, radius: 0.05, axis: side, angle: 10},
                     {type: unfold, open_time: 0.1, max_duration: 0.3}])");
@@ -110,6 +111,25 @@ TEST(Stages, RollAboutARandomSide) {
   EXPECT_EQ(rolls, 8);
   EXPECT_GT(first, 0);
   EXPECT_GT(second, 0);
+  int reported = 0;
+  for (const auto& e : r.sink.stage_ends) {
+    if (e.type != "roll") {
+      EXPECT_FALSE(e.roll_axis_deg.has_value()) << e.type;
+      continue;
+    }
+    ASSERT_TRUE(e.roll_axis_deg.has_value());
+    // The axis the apparatus holds from this cycle's roll (the checkpoint as the roll ended).
+    const Checkpoint* at_end = nullptr;
+    for (const Checkpoint& c : r.sink.checkpoints)
+      if (c.apparatus.rolled && c.stage == 1 && !c.in_stage && c.cycle == e.cycle) at_end = &c;
+    ASSERT_NE(at_end, nullptr) << "cycle " << e.cycle;
+    const double deg = *e.roll_axis_deg;
+    EXPECT_TRUE(std::abs(deg - 10.0) < 1e-9 || std::abs(deg - 100.0) < 1e-9) << deg;
+    const Vec3 a(std::cos(deg * M_PI / 180), std::sin(deg * M_PI / 180), 0);
+    EXPECT_NEAR(std::abs(a.dot(at_end->apparatus.axis_dir)), 1.0, 1e-12);
+    ++reported;
+  }
+  EXPECT_EQ(reported, 8);
 }
 
 TEST(Stages, CompressStaysInsideAndReachesTheTarget) {

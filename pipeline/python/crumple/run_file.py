@@ -58,7 +58,7 @@ class Run:
             self.cycles = _frame_table(f["cycles"], self._cycles, self.units,
                                        ["cycle", "t", "compaction"]) if self._cycles else \
                 _frame_table(None, [], self.units, ["cycle", "t", "compaction"])
-            cols = ["cycle", "stage_index", "stage", "t", "compaction", "wall"]
+            cols = ["cycle", "stage_index", "stage", "t", "compaction", "roll_axis_deg", "wall"]
             self.stage_ends = _frame_table(f["stage_ends"], self._stages, self.units, cols) \
                 if self._stages else _frame_table(None, [], self.units, cols)
             if "log" in f:
