@@ -62,12 +62,15 @@ calibrate-yield:
 # and the report says which were fitted). The calibration is the kept one the protocol states
 # (docs/studies/yield_radius_calibration/). Writes results/compaction/PREDICTIONS.md,
 # predictions.json and the figure beside the sweep's report, so that make keep-study
-# SWEEP=compaction keeps them too.
+# SWEEP=compaction keeps them too. PREDICT_SWEEP and PREDICT_CALIBRATION name another compaction
+# sweep and the calibration of its material (pipeline/sweeps/compaction_flat_unfold.yaml).
 PREDICT_GROUPS ?=
 PREDICT_SEEDS ?=
+PREDICT_SWEEP ?= compaction
+PREDICT_CALIBRATION ?= docs/studies/yield_radius_calibration/calibration.json
 .PHONY: predictions
 predictions:
-	$(MAKE) --no-print-directory sweep SWEEP=compaction SWEEP_GROUPS="$(PREDICT_GROUPS)" SWEEP_SEEDS="$(PREDICT_SEEDS)"
-	$(PYTHON) pipeline/calibration/predictions.py --sweep-results $(RESULTS)/compaction \
-	  --points runs/sweeps/compaction/points.json --calibration docs/studies/yield_radius_calibration/calibration.json \
-	  --out $(RESULTS)/compaction -o $(RESULTS)/compaction/predictions.$(FIG_FORMAT)
+	$(MAKE) --no-print-directory sweep SWEEP=$(PREDICT_SWEEP) SWEEP_GROUPS="$(PREDICT_GROUPS)" SWEEP_SEEDS="$(PREDICT_SEEDS)"
+	$(PYTHON) pipeline/calibration/predictions.py --sweep-results $(RESULTS)/$(PREDICT_SWEEP) \
+	  --points runs/sweeps/$(PREDICT_SWEEP)/points.json --calibration $(PREDICT_CALIBRATION) \
+	  --out $(RESULTS)/$(PREDICT_SWEEP) -o $(RESULTS)/$(PREDICT_SWEEP)/predictions.$(FIG_FORMAT)

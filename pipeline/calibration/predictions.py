@@ -158,6 +158,44 @@ def shape_rows(ens, law):
     return sorted(rows, key=lambda r: r["threshold"])
 
 
+def material_of(points, key):
+    """{value of `key` each point ran with}: its last --set key=..., else the protocol file's."""
+    values = set()
+    for pt in points["points"]:
+        given = [arg.split("=", 1)[1] for arg in pt["args"] if arg.startswith(key + "=")]
+        if given:
+            values.add(float(given[-1]))
+            continue
+        import yaml
+        path = points.get("protocol")
+        if not path:
+            die(f"the points file gives neither {key} nor the protocol file it ran")
+        try:
+            with open(path) as f:
+                node = yaml.safe_load(f)
+            for part in key.split("."):
+                node = node[part]
+            values.add(float(node))
+        except (OSError, KeyError, TypeError, ValueError, yaml.YAMLError) as e:
+            die(f"{path}: cannot read {key} the sweep's points ran with ({e})")
+    return values
+
+
+def check_material(points, cal, points_path, cal_path):
+    """Predictions are of the calibrated material: every point must have run with the value the
+    calibration found (a compaction sweep of another material, or the wrong calibration, would
+    otherwise be reported as predicted)."""
+    key = cal["calibrated"].get("key") or cal.get("key")
+    want = cal["calibrated"].get("key_value")
+    if key is None or want is None:
+        return
+    ran = material_of(points, key)
+    off = sorted(v for v in ran if not math.isclose(v, want, rel_tol=1e-9))
+    if off:
+        die(f"{points_path}: the sweep ran {key} = {', '.join(f'{v:g}' for v in off)}, but "
+            f"{cal_path} calibrated {want:g}: the predictions need the calibrated material")
+
+
 def fmt(x, sig=3):
     return "–" if x is None else f"{x:.{sig}g}"
 
@@ -310,6 +348,8 @@ def main():
     cal = load_json(a.calibration, "yield calibration")
     if "calibrated" not in cal:
         die(f"{a.calibration}: the calibration found no yield")
+    if a.points:
+        check_material(load_json(a.points, "points file"), cal, a.points, a.calibration)
     group = os.path.join(a.sweep_results, "groups", f"compaction-{a.compaction:g}", "ensemble.json")
     ens = load_ensemble(group)
     if ens.get("compaction") != a.compaction:

@@ -227,7 +227,8 @@ def law(n):
 
 class Predictions(unittest.TestCase):
     def run_case(self, factor, c1=50.0, c2=0.12, compactions=(0.63, 0.27, 0.18), sensitivity=None,
-                 runs=None):
+                 runs=None, material=("--set", "material.yield_radius=3.58e-3"), protocol=None,
+                 code=0):
         tmp = tempfile.mkdtemp()
         if runs is None:
             # Three seeds each growing as the law, at 0.9, 1 and 1.1 times the mean.
@@ -256,20 +257,38 @@ class Predictions(unittest.TestCase):
                                       "sigma": 0.05, "key_value": 3.58e-3, "c0": None}}, f)
         # The sweep's points: the preset's node count, then the sweep's own, which wins.
         with open(os.path.join(tmp, "points.json"), "w") as f:
-            json.dump({"points": [{"group": "compaction-0.27", "analyze_args": ["--px-per-edge", "24"],
-                                   "args": ["p.yaml", "--set", "mesh.nodes=1500", "--set",
-                                            "mesh.nodes=3000"]}]}, f)
+            pts = {"points": [{"group": "compaction-0.27", "analyze_args": ["--px-per-edge", "24"],
+                               "args": ["p.yaml", "--set", "mesh.nodes=1500", "--set",
+                                        "mesh.nodes=3000", *material]}]}
+            if protocol is not None:
+                pts["protocol"] = os.path.join(tmp, "p.yaml")
+                with open(pts["protocol"], "w") as g:
+                    g.write(protocol)
+            json.dump(pts, f)
         r = subprocess.run([sys.executable, PREDICT, "--sweep-results", tmp, "--calibration",
                             os.path.join(tmp, "cal.json"), "--points", os.path.join(tmp, "points.json"),
                             "--out", os.path.join(tmp, "out"),
                             "-o", os.path.join(tmp, "out", "p.svg")], capture_output=True, text=True)
-        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(r.returncode, code, r.stderr)
+        if code:
+            return r.stderr
         with open(os.path.join(tmp, "out", "predictions.json")) as f:
             doc = json.load(f)
         doc["_path"] = os.path.join(tmp, "out", "predictions.json")
         with open(os.path.join(tmp, "out", "PREDICTIONS.md")) as f:
             md = f.read()
         return {g["goal"].split(" within")[0]: g["reached"] for g in doc["goals"]}, doc, md
+
+    def test_the_sweep_must_have_run_the_calibrated_material(self):
+        # Set by the sweep to another radius: refused, naming both.
+        err = self.run_case(1.1, material=("--set", "material.yield_radius=3.34e-3"), code=2)
+        self.assertIn("ran material.yield_radius = 0.00334", err)
+        self.assertIn("calibrated 0.00358", err)
+        # Not set by the sweep: the protocol file's value counts, right or wrong.
+        goals, _, _ = self.run_case(1.1, material=(), protocol="material: {yield_radius: 3.58e-3}\n")
+        self.assertEqual(goals["P(n)"], "yes")
+        err = self.run_case(1.1, material=(), protocol="material: {yield_radius: 8.1e-3}\n", code=2)
+        self.assertIn("ran material.yield_radius = 0.0081", err)
 
     def test_one_compaction_is_no_collapse(self):
         goals, doc, md = self.run_case(1.1, compactions=(0.27,))
