@@ -31,6 +31,7 @@ struct Series {
 Series gather(const std::vector<EnsembleInput>& inputs, const std::string& key, bool increments) {
   Series s;
   for (const auto& in : inputs) {
+    const std::size_t first = s.sigma.size();
     const double D = in.doc.at("compaction").get<double>();
     for (const auto& row : in.doc.at("cycles")) {
       const auto m = number(row, key + "_mean");
@@ -44,6 +45,11 @@ Series gather(const std::vector<EnsembleInput>& inputs, const std::string& key, 
       s.all_sigma = s.all_sigma && e && *e > 0;
       s.sigma.push_back(e.value_or(0.0));
     }
+    // Each ratio's s.e.m. moderated within its own series, as its ensemble's fit does (their
+    // spreads differ by ratio: smaller compaction ratios give larger increments).
+    const std::vector<double> own(s.sigma.begin() + static_cast<long>(first), s.sigma.end());
+    const std::vector<double> mod = moderated_sems(own);
+    std::copy(mod.begin(), mod.end(), s.sigma.begin() + static_cast<long>(first));
   }
   return s;
 }
@@ -77,7 +83,9 @@ EnsembleJson fit_json(const Series& s, bool increments) {
           {"weighted", s.all_sigma},
           {"converged", f.converged},
           {"at_bound", f.at_bound},
-          {"weights_note", s.all_sigma ? "weighted by the seed-to-seed s.e.m."
+          {"weights_note", s.all_sigma ? "weighted by the seed-to-seed s.e.m., each ratio's "
+                                         "variances averaged half and half with their mean "
+                                         "(moderated)"
                                        : "unweighted (some point has no seed-to-seed s.e.m.: "
                                          "fewer than 2 runs or a zero spread); errors scaled by "
                                          "the residuals"}};

@@ -204,7 +204,8 @@ EnsembleJson ensemble_fit(LawSeries series, const std::vector<int>& n, const std
       {"cycles", std::move(cycles)},
       {"values", std::move(values)},
       {"sigmas", std::move(sigmas)},
-      {"weights_note", weighted ? "weighted by the seed-to-seed s.e.m."
+      {"weights_note", weighted ? "weighted by the seed-to-seed s.e.m., each variance averaged "
+                                  "half and half with the series' mean variance (moderated)"
                                 : "unweighted (no seed-to-seed s.e.m.: fewer than 2 runs or a "
                                   "zero spread); errors scaled by the residuals"}};
   if (D && *D > 0 && *D < 1) {
@@ -360,7 +361,8 @@ EnsembleJson ensemble_json(const std::vector<RunStats>& inputs) {
   }
 
   // The fits to the ensemble means, weighted by their s.e.m. when every cycle has one (a zero
-  // or missing spread would give a point infinite weight).
+  // or missing spread would give a point infinite weight), moderated (moderated_sems: a
+  // three-seed s.e.m. small by chance would otherwise carry the fit).
   const auto series = [&](const std::string& key, std::vector<int>& n, std::vector<double>& y,
                           std::optional<std::vector<double>>& sigma) {
     std::vector<double> s;
@@ -374,7 +376,7 @@ EnsembleJson ensemble_json(const std::vector<RunStats>& inputs) {
       all_positive = all_positive && e && *e > 0;
       s.push_back(e.value_or(0.0));
     }
-    if (all_positive) sigma = std::move(s);
+    if (all_positive) sigma = moderated_sems(s);
   };
   EnsembleJson fits = EnsembleJson::object();
   for (const char* q : kFitQuantities) {

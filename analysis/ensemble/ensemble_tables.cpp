@@ -226,4 +226,15 @@ EnsembleJson sensitivity_table(const std::vector<EnsembleJson>& runs) {
   return out;
 }
 
+std::vector<double> moderated_sems(const std::vector<double>& sems) {
+  if (sems.empty()) return {};
+  double mean_var = 0;
+  for (double s : sems) mean_var += s * s;
+  mean_var /= static_cast<double>(sems.size());
+  std::vector<double> out;
+  out.reserve(sems.size());
+  for (double s : sems) out.push_back(std::sqrt(0.5 * (s * s + mean_var)));
+  return out;
+}
+
 }  // namespace crumple::analysis::ensemble_detail

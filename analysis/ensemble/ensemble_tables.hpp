@@ -23,6 +23,16 @@ EnsembleJson or_null(const std::optional<double>& v);
 SampleStats put(EnsembleJson& row, const std::string& key,
                 const std::vector<std::optional<double>>& values);
 
+/// The weights of the law fits: each point's seed-to-seed s.e.m. moderated toward the series'
+/// root-mean-square s.e.m., s_i^2 -> (s_i^2 + mean_j s_j^2) / 2. A s.e.m. from three seeds
+/// rests on a variance with two degrees of freedom and is sometimes small by chance (three
+/// seeds whose increments happen to agree to 1 %), which would hand one point nearly all the
+/// weight and pin the fit to it with errors far too small. Averaging each variance half and
+/// half with the series' mean is a moderated variance (empirical-Bayes shrinkage with as many
+/// prior degrees of freedom as the sample's); it keeps the ordering of the weights and bounds
+/// any point's weight at twice that of a point with the mean variance.
+std::vector<double> moderated_sems(const std::vector<double>& sems);
+
 /// Per cycle and stage (index, type): the ensemble statistics of the stage's new, cumulative
 /// and lost crease length, and of the cycle's share made after its last compress stage, over
 /// the runs that have per-stage data. `runs`: the run records of ensemble.json ("cycles",

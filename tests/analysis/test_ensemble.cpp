@@ -6,6 +6,7 @@
 // ensembles of several compaction ratios (`crumple-analyze collapse`).
 #include "analysis/ensemble/collapse.hpp"
 #include "analysis/ensemble/ensemble.hpp"
+#include "analysis/ensemble/ensemble_tables.hpp"
 #include "analysis/fits/log_law.hpp"
 #include "analysis/io/run_reader.hpp"
 #include "tests/analysis/synthetic_run.hpp"
@@ -145,12 +146,60 @@ TEST(Ensemble, PerCycleStatisticsAndFitsRecoverTheLaw) {
       EXPECT_NEAR(f["c2"].get<double>(), D / f["n0"].get<double>(), 1e-12);
       EXPECT_NEAR(f["sigma_c1"].get<double>(), f["sigma_C"].get<double>() / (1 - D), 1e-12);
       EXPECT_FALSE(f["n0_poorly_constrained"].get<bool>());
-      // The weights are the s.e.m. of the very series fitted.
+      // The weights are the s.e.m. of the very series fitted, each variance averaged half and
+      // half with the series' mean variance (moderated_sems).
       const std::string key = std::string(q) + (std::string(kind) == "increments" ? "_increment" : "");
-      for (int i = 0; i < N; ++i)
-        EXPECT_DOUBLE_EQ(f["sigmas"][i].get<double>(), e["cycles"][i][key + "_sem"].get<double>());
+      double mean_var = 0;
+      for (int i = 0; i < N; ++i) mean_var += std::pow(e["cycles"][i][key + "_sem"].get<double>(), 2) / N;
+      for (int i = 0; i < N; ++i) {
+        const double s = e["cycles"][i][key + "_sem"].get<double>();
+        EXPECT_NEAR(f["sigmas"][i].get<double>(), std::sqrt(0.5 * (s * s + mean_var)), 1e-12 * s);
+      }
     }
   }
+}
+
+// A three-seed s.e.m. can be small by chance: with every other cycle's s.e.m. 2 and one
+// cycle's 0.02 (its seeds agreeing to 1 %), that cycle would carry 10^4 times the weight of any
+// other and the fit would pass through it. Moderated, the weights keep their order, no point
+// weighs more than twice one at the mean variance, and a fit whose chance-small point lies off
+// the law stays near the fit with equal weights instead of being pinned to that point.
+TEST(Ensemble, ModeratedSemsBoundAChanceSmallOne) {
+  using crumple::analysis::ensemble_detail::moderated_sems;
+  const std::vector<double> s = {2.0, 3.0, 2.0, 0.02, 2.5};
+  const std::vector<double> m = moderated_sems(s);
+  ASSERT_EQ(m.size(), s.size());
+  double mean_var = 0;
+  for (double x : s) mean_var += x * x / s.size();
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    EXPECT_NEAR(m[i] * m[i], 0.5 * (s[i] * s[i] + mean_var), 1e-12);
+    EXPECT_GE(m[i] * m[i], 0.5 * mean_var);  // weight at most twice the mean variance's
+    for (std::size_t j = 0; j < s.size(); ++j) {
+      if (s[i] < s[j]) {
+        EXPECT_LT(m[i], m[j]);  // order kept
+      }
+    }
+  }
+  EXPECT_TRUE(moderated_sems({}).empty());
+  const std::vector<double> equal = moderated_sems({1.5, 1.5, 1.5});
+  for (double x : equal) EXPECT_NEAR(x, 1.5, 1e-15);  // equal s.e.m. are left as they are
+
+  // Increments on the law C [ln(1 + n/n0) - ln(1 + (n-1)/n0)] with C = 38, n0 = 2.7, except
+  // cycle 8, 40 % low with the chance-small s.e.m.
+  std::vector<int> n;
+  std::vector<double> y, raw;
+  for (int k = 1; k <= 10; ++k) {
+    n.push_back(k);
+    y.push_back(38.0 * (std::log1p(k / 2.7) - std::log1p((k - 1) / 2.7)) * (k == 8 ? 0.6 : 1.0));
+    raw.push_back(k == 8 ? 0.02 : 2.0);
+  }
+  const J pinned = ensemble_fit(LawSeries::Increments, n, y, raw, std::nullopt);
+  const J moderated = ensemble_fit(LawSeries::Increments, n, y, moderated_sems(raw), std::nullopt);
+  const J equal_w = ensemble_fit(LawSeries::Increments, n, y, std::vector<double>(10, 2.0), std::nullopt);
+  const auto C = [](const J& f) { return f["C"].get<double>(); };
+  // Raw weights drag C far from the equal-weight fit; moderated, it stays within 10 % of it.
+  EXPECT_GT(std::abs(C(pinned) - C(equal_w)), 0.2 * C(equal_w));
+  EXPECT_LT(std::abs(C(moderated) - C(equal_w)), 0.1 * C(equal_w));
 }
 
 // Means off the law: the fit is the minimum of chi^2 = sum ((y - model)/sem)^2 (weighted least
