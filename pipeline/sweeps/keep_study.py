@@ -3,7 +3,7 @@
 docs/studies/NAME/, the report and its figures, the fits (collapse.json, history.json, convergence.json
 and .csv, as the sweep made them; a yield calibration's calibration.json, .csv and CALIBRATION.md;
 make predictions' PREDICTIONS.md and predictions.json; compare_groups.py's COMPARISON.md and
-.json), and groups.csv, each group's per-cycle ensemble table (mean, s.d. and s.e.m.
+.json, and any COMPARISON_WHAT.md and .json beside them), and groups.csv, each group's per-cycle ensemble table (mean, s.d. and s.e.m.
 over seeds of the crease lengths, P, facet counts, single-triangle fraction and a_fit). The run
 files stay out (they are binary and large); `make sweep SWEEP=NAME` makes them again, and
 `plot_sweep.py --results docs/studies/NAME --collapse-only` redraws the collapse from the JSON.
@@ -12,6 +12,7 @@ usage: keep_study.py --points runs/sweeps/NAME/points.json --results results/NAM
 """
 import argparse
 import csv
+import glob
 import os
 import shutil
 import sys
@@ -36,7 +37,8 @@ def main():
     kept = []
     for f in ("collapse.json", "history.json", "convergence.json", "convergence.csv",
               "calibration.json", "calibration.csv", "CALIBRATION.md", "predictions.json", "PREDICTIONS.md",
-              "COMPARISON.md", "COMPARISON.json",
+              *sorted(os.path.basename(c) for c in glob.glob(os.path.join(a.results, "COMPARISON*"))
+                      if c.endswith((".md", ".json"))),
               "crease_length.png", "collapse.png", "convergence.png", "calibration.png", "predictions.png"):
         if os.path.isfile(os.path.join(a.results, f)):
             shutil.copyfile(os.path.join(a.results, f), os.path.join(a.out, f))

@@ -145,9 +145,16 @@ class Expand(unittest.TestCase):
                 f.write("# Sweep `s`\n\nbody\n")
             with open(os.path.join(res, "collapse.json"), "w") as f:
                 f.write("{}")
+            # compare_groups.py's outputs, the default name and a named one; not other files.
+            for name in ("COMPARISON.md", "COMPARISON.json", "COMPARISON_unfold.md",
+                         "COMPARISON_unfold.json", "COMPARISON_notes.txt"):
+                with open(os.path.join(res, name), "w") as f:
+                    f.write("x")
             r = subprocess.run(run, capture_output=True, text=True)
             self.assertEqual(r.returncode, 0, r.stderr)
-            self.assertEqual(sorted(os.listdir(kept)), ["REPORT.md", "collapse.json", "groups.csv"])
+            self.assertEqual(sorted(os.listdir(kept)),
+                             ["COMPARISON.json", "COMPARISON.md", "COMPARISON_unfold.json",
+                              "COMPARISON_unfold.md", "REPORT.md", "collapse.json", "groups.csv"])
             report = read(os.path.join(kept, "REPORT.md"))
             self.assertTrue(report.startswith("# Sweep `s`\n\n> Kept in the repository"), report)
             self.assertIn("body", report)
