@@ -31,8 +31,8 @@ struct Series {
 Series gather(const std::vector<EnsembleInput>& inputs, const std::string& key, bool increments) {
   Series s;
   for (const auto& in : inputs) {
-    const std::size_t first = s.sigma.size();
     const double D = in.doc.at("compaction").get<double>();
+    std::vector<double> sems;  // this ratio's
     for (const auto& row : in.doc.at("cycles")) {
       const auto m = number(row, key + "_mean");
       if (!m) continue;
@@ -43,13 +43,12 @@ Series gather(const std::vector<EnsembleInput>& inputs, const std::string& key, 
       s.to.push_back(n);
       s.y.push_back(*m);
       s.all_sigma = s.all_sigma && e && *e > 0;
-      s.sigma.push_back(e.value_or(0.0));
+      sems.push_back(e.value_or(0.0));
     }
     // Each ratio's s.e.m. moderated within its own series, as its ensemble's fit does (their
     // spreads differ by ratio: smaller compaction ratios give larger increments).
-    const std::vector<double> own(s.sigma.begin() + static_cast<long>(first), s.sigma.end());
-    const std::vector<double> mod = moderated_sems(own);
-    std::copy(mod.begin(), mod.end(), s.sigma.begin() + static_cast<long>(first));
+    const std::vector<double> mod = moderated_sems(sems);
+    s.sigma.insert(s.sigma.end(), mod.begin(), mod.end());
   }
   return s;
 }

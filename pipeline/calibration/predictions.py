@@ -29,6 +29,8 @@ import os
 import statistics
 import sys
 
+import yaml
+
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
 from common import (add_figure_args, die, experiment, figure_output, load_ensemble,  # noqa: E402
                     load_json, ratio_of_means, save_figure)
@@ -158,15 +160,22 @@ def shape_rows(ens, law):
     return sorted(rows, key=lambda r: r["threshold"])
 
 
+def set_value(point, key):
+    """The value a sweep point gave `key` on its command line, or None: its last --set key=...
+    (the sweep's own settings come after the preset's, and the last one given wins, as in
+    crumple-sim)."""
+    given = [arg.split("=", 1)[1] for arg in point["args"] if arg.startswith(key + "=")]
+    return given[-1] if given else None
+
+
 def material_of(points, key):
-    """{value of `key` each point ran with}: its last --set key=..., else the protocol file's."""
+    """{value of `key` each point ran with}: its --set value, else the protocol file's."""
     values = set()
     for pt in points["points"]:
-        given = [arg.split("=", 1)[1] for arg in pt["args"] if arg.startswith(key + "=")]
-        if given:
-            values.add(float(given[-1]))
+        given = set_value(pt, key)
+        if given is not None:
+            values.add(float(given))
             continue
-        import yaml
         path = points.get("protocol")
         if not path:
             die(f"the points file gives neither {key} nor the protocol file it ran")
@@ -348,21 +357,17 @@ def main():
     cal = load_json(a.calibration, "yield calibration")
     if "calibrated" not in cal:
         die(f"{a.calibration}: the calibration found no yield")
+    points = load_json(a.points, "points file") if a.points else {"points": []}
     if a.points:
-        check_material(load_json(a.points, "points file"), cal, a.points, a.calibration)
+        check_material(points, cal, a.points, a.calibration)
     group = os.path.join(a.sweep_results, "groups", f"compaction-{a.compaction:g}", "ensemble.json")
     ens = load_ensemble(group)
     if ens.get("compaction") != a.compaction:
         die(f"{group}: crumpled to {ens.get('compaction')}, not {a.compaction}")
     # The group's points (optional): the resolution and the analysis options they ran with.
-    own = [pt for pt in (load_json(a.points, "points file")["points"] if a.points else [])
-           if pt["group"] == f"compaction-{a.compaction:g}"]
+    own = [pt for pt in points["points"] if pt["group"] == f"compaction-{a.compaction:g}"]
     analyze = own[0].get("analyze_args", []) if own else []
-    # Each point's node count is its last --set mesh.nodes (the sweep's own settings come after
-    # the preset's, and the last one given wins, as in crumple-sim).
-    per_point = [[arg.split("=", 1)[1] for arg in pt["args"] if arg.startswith("mesh.nodes=")]
-                 for pt in own]
-    nodes = sorted({given[-1] for given in per_point if given})
+    nodes = sorted({n for n in (set_value(pt, "mesh.nodes") for pt in own) if n is not None})
     law = experiment(a.compaction, [c["cycle"] for c in ens["cycles"]])
     P = crease_rows(ens, law)
     facets = facet_rows(ens)

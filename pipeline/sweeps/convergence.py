@@ -58,6 +58,11 @@ ASSUMED_ORDER = 1.0
 PRESET_TOLERANCES = {"quick": 0.15, "paper": 0.05}
 
 
+def has_mean(m):
+    """Whether a rung's mean is a number the ladder can use (not missing, not NaN)."""
+    return m is not None and math.isfinite(m)
+
+
 def solve_order(h, q):
     """p with (q1 - q2)/(q2 - q3) = (h1^p - h2^p)/(h2^p - h3^p), h1 > h2 > h3; None when the
     differences change sign or no p in ORDER_RANGE fits."""
@@ -83,7 +88,7 @@ def solve_order(h, q):
 
 def extrapolate(rungs):
     """rungs: [(h, mean, sem)] coarse to fine. Returns the estimate row (dict)."""
-    rungs = [r for r in rungs if r[1] is not None and math.isfinite(r[1])]
+    rungs = [r for r in rungs if has_mean(r[1])]
     if len(rungs) < 2:
         return {"estimate": None, "method": "single rung: no estimate"}
     p, method = None, None
@@ -134,7 +139,7 @@ STABLE_SHARE = 0.84
 def used_rungs(ladder):
     """Indices of the rungs `extrapolate` can depend on: the finest three with a mean (the third
     through the order, observed or, when its ladder does not converge, assumed)."""
-    finite = [i for i, (_, m, _) in enumerate(ladder) if m is not None and math.isfinite(m)]
+    finite = [i for i, (_, m, _) in enumerate(ladder) if has_mean(m)]
     return finite[-3:]
 
 
@@ -166,7 +171,7 @@ def redraw(ladder, est, unit, seed):
     no_est = other = 0
     noise = rng.standard_normal((REDRAWS, n))
     for z in noise:
-        moved = [(h, m + s * zj if (s is not None and m is not None and math.isfinite(m)) else m, s)
+        moved = [(h, m + s * zj if (s is not None and has_mean(m)) else m, s)
                  for (h, m, s), zj in zip(ladder, z)]
         got = within_range(extrapolate(moved), unit)
         e = got.get("estimate")
@@ -176,8 +181,7 @@ def redraw(ladder, est, unit, seed):
         if got["order_observed"] != kind:
             other += 1
         estimates.append(e)
-        rels.append([(m / e - 1) if (m is not None and math.isfinite(m)) else math.nan
-                     for _, m, _ in moved])
+        rels.append([m / e - 1 if has_mean(m) else math.nan for _, m, _ in moved])
     summary = {"redraws": REDRAWS, "no_estimate_share": no_est / REDRAWS,
                "other_method_share": other / REDRAWS}
     summary["stable"] = 1 - summary["no_estimate_share"] - summary["other_method_share"] \
@@ -188,8 +192,8 @@ def redraw(ladder, est, unit, seed):
     if len(estimates) < REDRAWS / 2:  # mostly no estimate: no spread to quote
         return None, [None] * n, summary
     rels = np.array(rels)
-    rel_sems = [None if (ladder[i][1] is None or not math.isfinite(ladder[i][1])
-                         or ladder[i][2] is None) else half_width(rels[:, i]) for i in range(n)]
+    rel_sems = [half_width(rels[:, i]) if has_mean(m) and s is not None else None
+                for i, (_, m, s) in enumerate(ladder)]
     return half_width(estimates), rel_sems, summary
 
 
@@ -229,7 +233,7 @@ def convergence_row(key, label, unit, cycle, rungs, vals):
         est["estimate_sem"], rel_sems = None, [None] * len(vals)
     per_rung = []
     for r, (h, m, s, n), rel_sem in zip(rungs, vals, rel_sems):
-        finite = m is not None and math.isfinite(m)
+        finite = has_mean(m)
         rel = (m - e) / e if (e is not None and e != 0 and finite) else None
         per_rung.append({"nodes": r["nodes"], "h_m": h, "runs": n, "mean": m, "sem": s,
                          "rel_error": rel, "rel_error_sem": rel_sem if rel is not None else None})

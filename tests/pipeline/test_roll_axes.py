@@ -64,32 +64,31 @@ def write_run(path, axes, P, recorded=None):
 
 
 class RollAxes(unittest.TestCase):
+    def table(self, tmp, axes, P, recorded=None):
+        """roll_axes.py on one run written here: (its CSV rows, its stdout)."""
+        run = os.path.join(tmp, "seed1.h5")
+        write_run(run, axes, P, recorded)
+        out = os.path.join(tmp, "axes.csv")
+        r = subprocess.run([sys.executable, SCRIPT, run, "-o", out], capture_output=True,
+                           text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(out) as f:
+            return list(csv.DictReader(f)), r.stdout
+
     def test_axes_novelty_and_increments(self):
         with tempfile.TemporaryDirectory() as tmp:
-            run = os.path.join(tmp, "seed1.h5")
-            write_run(run, [30, 30, 120], [10.0, 11.5, 25.0])
-            out = os.path.join(tmp, "axes.csv")
-            r = subprocess.run([sys.executable, SCRIPT, run, "-o", out], capture_output=True,
-                               text=True)
-            self.assertEqual(r.returncode, 0, r.stderr)
-            with open(out) as f:
-                rows = list(csv.DictReader(f))
+            rows, stdout = self.table(tmp, [30, 30, 120], [10.0, 11.5, 25.0])
             self.assertEqual([int(x["axis_deg"]) for x in rows], [30, 30, 120])
+            self.assertEqual({x["axis_source"] for x in rows}, {"inferred"})
             self.assertEqual([x["angle_to_earlier_axes_deg"] for x in rows], ["", "0", "90"])
             self.assertEqual([float(x["P_increment"]) for x in rows], [10.0, 1.5, 13.5])
             self.assertIn("new axis 30-90 degrees from every earlier one: 1 cycles, mean P "
-                          "increment 13.50", r.stdout)
+                          "increment 13.50", stdout)
 
     def test_a_recorded_axis_is_used_and_checked(self):
         with tempfile.TemporaryDirectory() as tmp:
-            run = os.path.join(tmp, "seed1.h5")
-            write_run(run, [30, 30, 120], [10.0, 11.5, 25.0], recorded=[30.25, 29.8, 120.4])
-            out = os.path.join(tmp, "axes.csv")
-            r = subprocess.run([sys.executable, SCRIPT, run, "-o", out], capture_output=True,
-                               text=True)
-            self.assertEqual(r.returncode, 0, r.stderr)
-            with open(out) as f:
-                rows = list(csv.DictReader(f))
+            rows, _ = self.table(tmp, [30, 30, 120], [10.0, 11.5, 25.0],
+                                 recorded=[30.25, 29.8, 120.4])
             self.assertEqual([float(x["axis_deg"]) for x in rows], [30.25, 29.8, 120.4])
             self.assertEqual({x["axis_source"] for x in rows}, {"recorded"})
             self.assertEqual([int(x["inferred_axis_deg"]) for x in rows], [30, 30, 120])

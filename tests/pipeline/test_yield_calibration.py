@@ -145,18 +145,23 @@ class YieldCalibration(unittest.TestCase):
         self.assertEqual(code, 3)
         self.assertIn("to 4.2 mm: add smaller values", err)
 
+    def dip(self, sem):
+        """A dip of 24 inside against 30 and 28 at the ends, every value with s.e.m. `sem`
+        (target 12.0): (exit code, stderr)."""
+        code, err, _, _ = self.run_case({28.0: ensemble(30, sem), 30.0: ensemble(24, sem),
+                                         34.0: ensemble(28, sem)})
+        return code, err
+
     def test_a_turn_within_the_seeds_noise_is_no_turn(self):
         # A dip above the target shown by the seeds (24 ± 0.5 inside, 30 ± 0.5 and 28 ± 0.5 at
         # the ends): not sent to an end.
-        code, err, _, _ = self.run_case({28.0: ensemble(30, 0.5), 30.0: ensemble(24, 0.5),
-                                         34.0: ensemble(28, 0.5)})
+        code, err = self.dip(0.5)
         self.assertEqual(code, 3)
         self.assertIn("with a dip of 24.00 ± 0.50 L0", err)
         # The same means with s.e.m. 3: the dip is within the noise of the ends. P moves toward
         # the target at neither end (both ends are further from it than their neighbour), so
         # the grid does not show which way.
-        code, err, _, _ = self.run_case({28.0: ensemble(30, 3), 30.0: ensemble(24, 3),
-                                         34.0: ensemble(28, 3)})
+        code, err = self.dip(3)
         self.assertEqual(code, 3)
         self.assertNotIn("dip of", err)
         self.assertIn("does not show which way the target lies", err)
@@ -173,12 +178,10 @@ class YieldCalibration(unittest.TestCase):
     def test_a_turn_is_claimed_at_twice_the_combined_sem(self):
         # The dip of 24 against ends of 30 and 28 (target 12.0): the nearer end is 4 L0 further
         # from the target, so the dip is shown while 4 > 2 hypot(s, s), s < 1.414.
-        code, err, _, _ = self.run_case({28.0: ensemble(30, 1.40), 30.0: ensemble(24, 1.40),
-                                         34.0: ensemble(28, 1.40)})
+        code, err = self.dip(1.40)
         self.assertEqual(code, 3)
         self.assertIn("with a dip of 24.00 ± 1.40 L0", err)
-        code, err, _, _ = self.run_case({28.0: ensemble(30, 1.43), 30.0: ensemble(24, 1.43),
-                                         34.0: ensemble(28, 1.43)})
+        code, err = self.dip(1.43)
         self.assertEqual(code, 3)
         self.assertNotIn("dip of", err)
 

@@ -23,7 +23,8 @@ def run_units(length_unit_m):
         "h": "s", "a_ratio": "1", "a_ratio_avg": "1",
         "e_stretch": "J", "e_bend": "J", "e_contact": "J", "e_external": "J", "e_kinetic": "J",
         "compaction": "1 (final / initial piston gap)", "wall": "s (wall clock)",
-        "roll_axis_deg": "degree (in-plane roll axis from x, 0-180)", "cycle": "1", "stage": "- (stage type)", "stage_index": "1", "step": "1",
+        "roll_axis_deg": "degree (in-plane roll axis from x, 0-180)",
+        "cycle": "1", "stage": "- (stage type)", "stage_index": "1", "step": "1",
         "mode": "0 implicit, 1 explicit",
         "order": "1", "newton_iters": "1", "cg_iters": "1", "rejections": "1",
     }
