@@ -133,6 +133,11 @@ void add_run_options(CLI::App& app, AnalyzeOptions& opt, double& absolute, doubl
                  "resamples for the a_fit interval and the KS p-value")
       ->capture_default_str()
       ->check(CLI::Range(10, 100000));
+  app.add_option("--facet-floor-triangles", opt.facet_floor_triangles,
+                 "resolution floor, in mean mesh triangles, of the facet law fitted to the facets "
+                 "above it (the *_above_floor keys)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_option("--seed", opt.seed, "seed of the resampling")->capture_default_str();
 }
 

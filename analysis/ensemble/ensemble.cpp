@@ -69,7 +69,11 @@ const char* const kKeys[] = {"crease_length_L0", "crease_length_m", "new_crease_
                              "perimeter_P", "dangling_fraction", "n_facets",
                              "n_single_triangle_facets", "single_triangle_fraction",
                              "new_length_share_after_compress", "a_fit", "a_moment", "a_univ",
-                             "ks_distance", "ks_pvalue", "mean_area_x", "smallest_resolvable_xi"};
+                             "ks_distance", "ks_pvalue", "mean_area_x", "smallest_resolvable_xi",
+                             // the facet law cut at the resolution floor (fits/truncated_shape.hpp)
+                             "n_facets_above_floor", "a_fit_above_floor", "a_univ_above_floor",
+                             "mean_area_x_above_floor", "law_share_below_floor",
+                             "ks_pvalue_above_floor"};
 // The fitted quantities, P first: it is the experiments' measure (docs/STATISTICS.md §2.1).
 const char* const kFitQuantities[] = {"perimeter_P", "crease_length_L0"};
 constexpr double kKsLevel = 0.05;
@@ -142,6 +146,37 @@ std::string list_values(const std::vector<std::optional<double>>& v) {
   std::string s;
   for (const auto& x : v) s += (s.empty() ? "" : ", ") + (x ? format_number(*x) : "unknown");
   return s;
+}
+
+/// The KS test of each run at 5 % (p < 0.05) from the p-value under `p_key`: per run into
+/// row[prefix + "_tests"], counted in row[prefix + "_n_tested"], "_n_rejected", "_n_at_floor".
+/// A p at the bootstrap floor 1/(B+1) means no resample was as far from the law as the data:
+/// p is at most the floor. Entries have `run` and `cycle` (records of ensemble_json).
+template <class Entries>
+void put_ks_tests(EnsembleJson& row, const Entries& entries, const char* p_key,
+                  const std::string& prefix) {
+  EnsembleJson ks = EnsembleJson::array();
+  int tested = 0, rejected = 0, at_floor_count = 0;
+  for (const auto& e : entries) {
+    const auto p = number(*e.cycle, p_key);
+    const auto B = number(*e.run, "bootstrap_resamples");
+    const std::optional<double> floor =
+        B && *B != 0 ? std::optional<double>(1.0 / (*B + 1.0)) : std::nullopt;
+    const bool at_floor = p && floor && *p <= *floor * (1 + 1e-9);
+    const bool rej = p && *p < kKsLevel;
+    ks.push_back({{"seed", e.run->at("seed")},
+                  {"p", or_null(p)},
+                  {"floor", or_null(floor)},
+                  {"at_floor", at_floor},
+                  {"rejected", rej}});
+    tested += p.has_value();
+    rejected += rej;
+    at_floor_count += at_floor;
+  }
+  row[prefix + "_tests"] = std::move(ks);
+  row[prefix + "_n_tested"] = tested;
+  row[prefix + "_n_rejected"] = rejected;
+  row[prefix + "_n_at_floor"] = at_floor_count;
 }
 
 }  // namespace
@@ -286,7 +321,7 @@ EnsembleJson ensemble_json(const std::vector<RunStats>& inputs) {
     const EnsembleJson* run;
     const EnsembleJson* cycle;
     std::map<std::string, double> increment;
-    std::optional<double> a_diff;
+    std::optional<double> a_diff, a_diff_above_floor;
   };
   std::map<int, std::vector<Entry>> by_cycle;
   for (const auto& r : runs) {
@@ -294,7 +329,7 @@ EnsembleJson ensemble_json(const std::vector<RunStats>& inputs) {
     for (const auto& c : r.at("cycles")) index[c.at("cycle").get<int>()] = &c;
     for (const auto& c : r.at("cycles")) {
       const int n = c.at("cycle").get<int>();
-      Entry e{&r, &c, {}, std::nullopt};
+      Entry e{&r, &c, {}, std::nullopt, std::nullopt};
       // Before the first cycle the sheet is flat: y_0 = 0. A missing previous cycle leaves the
       // increment undefined rather than spanning two cycles.
       const auto prev = index.find(n - 1);
@@ -307,6 +342,8 @@ EnsembleJson ensemble_json(const std::vector<RunStats>& inputs) {
       }
       const auto a = number(c, "a_fit"), u = number(c, "a_univ");
       if (a && u) e.a_diff = *a - *u;
+      const auto af = number(c, "a_fit_above_floor"), uf = number(c, "a_univ_above_floor");
+      if (af && uf) e.a_diff_above_floor = *af - *uf;
       by_cycle[n].push_back(std::move(e));
     }
   }
@@ -333,30 +370,15 @@ EnsembleJson ensemble_json(const std::vector<RunStats>& inputs) {
     std::vector<std::optional<double>> d;
     for (const auto& e : entries) d.push_back(e.a_diff);
     put(row, "a_fit_minus_a_univ", d);
-    // KS test per run: rejected at 5 % when p < 0.05. A p at the bootstrap floor 1/(B+1) means
-    // no resample was as far from phi as the data: p is at most the floor.
-    EnsembleJson ks = EnsembleJson::array();
-    int tested = 0, rejected = 0, at_floor_count = 0;
-    for (const auto& e : entries) {
-      const auto p = number(*e.cycle, "ks_pvalue");
-      const auto B = number(*e.run, "bootstrap_resamples");
-      const std::optional<double> floor =
-          B && *B != 0 ? std::optional<double>(1.0 / (*B + 1.0)) : std::nullopt;
-      const bool at_floor = p && floor && *p <= *floor * (1 + 1e-9);
-      const bool rej = p && *p < kKsLevel;
-      ks.push_back({{"seed", e.run->at("seed")},
-                    {"p", or_null(p)},
-                    {"floor", or_null(floor)},
-                    {"at_floor", at_floor},
-                    {"rejected", rej}});
-      tested += p.has_value();
-      rejected += rej;
-      at_floor_count += at_floor;
-    }
-    row["ks_tests"] = std::move(ks);
-    row["ks_n_tested"] = tested;
-    row["ks_n_rejected"] = rejected;
-    row["ks_n_at_floor"] = at_floor_count;
+    d.clear();
+    for (const auto& e : entries) d.push_back(e.a_diff_above_floor);
+    put(row, "a_fit_minus_a_univ_above_floor", d);
+    // How many runs measured a shape above the floor (the others' fits ran to the range's edge).
+    int n_shape = 0;
+    for (const auto& e : entries) n_shape += number(*e.cycle, "a_fit_above_floor").has_value();
+    row["a_fit_above_floor_n"] = n_shape;
+    put_ks_tests(row, entries, "ks_pvalue", "ks");
+    put_ks_tests(row, entries, "ks_pvalue_above_floor", "ks_above_floor");
     table.push_back(std::move(row));
   }
 

@@ -91,13 +91,7 @@ double a_universal(double s, double tau) {
 
 double ks_distance(std::vector<double> xi, double a) {
   std::sort(xi.begin(), xi.end());
-  const double n = static_cast<double>(xi.size());
-  double d = 0.0;
-  for (std::size_t i = 0; i < xi.size(); ++i) {
-    const double F = phi_cdf(xi[i], a);
-    d = std::max({d, static_cast<double>(i + 1) / n - F, F - static_cast<double>(i) / n});
-  }
-  return d;
+  return ks_distance_sorted(xi, [a](double v) { return phi_cdf(v, a); });
 }
 
 std::vector<double> scaled_areas(const std::vector<double>& x) {

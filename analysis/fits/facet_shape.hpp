@@ -6,6 +6,8 @@
 // scale tied to the mean area.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace crumple::analysis {
@@ -32,6 +34,18 @@ double a_universal(double s, double tau = kTau);
 
 /// Kolmogorov-Smirnov distance sup |F_emp(xi) - F(xi; a)|.
 double ks_distance(std::vector<double> xi, double a);
+
+/// sup |F_emp - F| of ascending values against the CDF F (both sides of each step).
+template <class Cdf>
+double ks_distance_sorted(const std::vector<double>& sorted, Cdf F) {
+  const double n = static_cast<double>(sorted.size());
+  double d = 0.0;
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    const double f = F(sorted[i]);
+    d = std::max({d, static_cast<double>(i + 1) / n - f, f - static_cast<double>(i) / n});
+  }
+  return d;
+}
 
 /// Scales areas to xi = x / mean(x).
 std::vector<double> scaled_areas(const std::vector<double>& x);

@@ -53,4 +53,11 @@ double gamma_p(double a, double x) {
   return x < a + 1.0 ? series(a, x) : 1.0 - continued_fraction(a, x);
 }
 
+double gamma_q(double a, double x) {
+  if (!(a > 0) || !(x >= 0)) throw std::domain_error("gamma_q: need a > 0 and x >= 0");
+  if (x == 0) return 1.0;
+  if (std::isinf(x)) return 0.0;
+  return x < a + 1.0 ? 1.0 - series(a, x) : continued_fraction(a, x);
+}
+
 }  // namespace crumple::analysis

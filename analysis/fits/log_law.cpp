@@ -11,6 +11,8 @@
 // is computed afterwards from the Jacobian in (C, n0) at the optimum.
 #include "analysis/fits/log_law.hpp"
 
+#include "analysis/fits/minimize_1d.hpp"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -50,56 +52,6 @@ struct Problem {
   /// chi^2 with C eliminated: the profile over u = ln n0.
   double profile(double u) const { return rss(best_C(std::exp(u)), std::exp(u)); }
 };
-
-/// Brent's minimisation of f on [a, b] (golden sections and parabolic steps; R. P. Brent,
-/// Algorithms for Minimization without Derivatives, 1973, ch. 5) from the interior point x with
-/// f(x) <= f(a), f(b); returns the minimiser, counts the iterations, and sets `converged` when
-/// the bracket shrank to the tolerance before the iteration limit.
-template <class F>
-double brent_minimize(F f, double a, double b, double x, int& iterations, bool& converged) {
-  constexpr double golden = 0.3819660112501051, eps = 1.4901161193847656e-08;  // sqrt(DBL_EPSILON)
-  double w = x, v = x, fx = f(x), fw = fx, fv = fx, d = 0, e = 0;
-  converged = false;
-  for (iterations = 0; iterations < 200; ++iterations) {
-    const double m = 0.5 * (a + b), tol = eps * std::abs(x) + 1e-12, t2 = 2 * tol;
-    if (std::abs(x - m) <= t2 - 0.5 * (b - a)) {
-      converged = true;
-      break;
-    }
-    double p = 0, q = 0, r = 0;
-    if (std::abs(e) > tol) {  // try a parabola through x, w, v
-      r = (x - w) * (fx - fv);
-      q = (x - v) * (fx - fw);
-      p = (x - v) * q - (x - w) * r;
-      q = 2 * (q - r);
-      if (q > 0) p = -p;
-      q = std::abs(q);
-      r = e, e = d;
-    }
-    if (std::abs(p) < std::abs(0.5 * q * r) && p > q * (a - x) && p < q * (b - x)) {
-      d = p / q;
-      const double u = x + d;
-      if (u - a < t2 || b - u < t2) d = x < m ? tol : -tol;
-    } else {
-      e = (x < m ? b : a) - x;
-      d = golden * e;
-    }
-    const double u = x + (std::abs(d) >= tol ? d : (d > 0 ? tol : -tol));
-    const double fu = f(u);
-    if (fu <= fx) {
-      (u < x ? b : a) = x;
-      v = w, fv = fw, w = x, fw = fx, x = u, fx = fu;
-    } else {
-      (u < x ? a : b) = u;
-      if (fu <= fw || w == x) {
-        v = w, fv = fw, w = u, fw = fu;
-      } else if (fu <= fv || v == x || v == w) {
-        v = u, fv = fu;
-      }
-    }
-  }
-  return x;
-}
 
 LogLawFit solve(Problem& P, const std::vector<double>& sigma) {
   const Eigen::Index N = P.n.size();

@@ -3,6 +3,7 @@
 
 #include "analysis/fits/facet_shape.hpp"
 #include "analysis/fits/shape_bootstrap.hpp"
+#include "analysis/fits/truncated_shape.hpp"
 #include "analysis/io/run_reader.hpp"
 #include "analysis/raster/crease_map.hpp"
 #include "analysis/raster/raster_frame.hpp"
@@ -40,6 +41,31 @@ ShapeStats shape_stats(const std::vector<double>& x, const AnalyzeOptions& opt,
   s.ks = ks_distance(xi, s.a_fit);
   s.ks_p = ks_pvalue_parametric(xi.size(), s.a_fit, s.ks, opt.bootstrap, seed + 7919);
   s.ks_univ = ks_distance(xi, s.a_univ);
+  return s;
+}
+
+/// The truncated law over the facets at or above floor_x (fractions of the sheet); nullopt with
+/// fewer than 5 there, or when the fitted law leaves too little mass above the floor to draw
+/// the bootstrap's samples from.
+std::optional<FloorShapeStats> floor_shape_stats(const std::vector<double>& x, double floor_x,
+                                                 const AnalyzeOptions& opt, std::uint64_t seed) {
+  const auto above = std::count_if(x.begin(), x.end(), [&](double v) { return v >= floor_x; });
+  if (above < 5) return std::nullopt;
+  const TruncatedShapeFit fit = fit_truncated_shape(x, floor_x);
+  FloorShapeStats s;
+  s.floor_x = floor_x;
+  s.n_facets = static_cast<long>(fit.n);
+  s.a_fit = fit.a;
+  s.mean_x = fit.mean_x;
+  s.a_univ = a_universal(fit.mean_x);
+  s.law_share_below = fit.share_below;
+  s.at_bound = fit.at_bound;
+  s.ks = truncated_ks_distance(x, fit);
+  try {
+    s.ks_p = truncated_ks_pvalue(fit, s.ks, opt.bootstrap, seed);
+  } catch (const std::runtime_error&) {
+    return std::nullopt;
+  }
   return s;
 }
 
@@ -193,6 +219,8 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt_given) {
   out.mean_triangle_area_m2 = mean_triangle_area(mesh) * unit * unit;
   out.pixel_floor_m2 = opt.segment.min_facet_px / (out.px_per_m * out.px_per_m);
   out.smallest_resolvable_m2 = std::max(out.mean_triangle_area_m2, out.pixel_floor_m2);
+  out.facet_floor_m2 = std::max(opt.facet_floor_triangles * out.mean_triangle_area_m2,
+                                out.pixel_floor_m2);
   // A triangle's side should span several pixels, or a one-triangle facet vanishes under the
   // crease lines and the closing and the raster, not the mesh, sets the floor.
   const double edge_px = std::sqrt(4.0 * out.mean_triangle_area_m2 / std::sqrt(3.0)) * out.px_per_m;
@@ -248,6 +276,8 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt_given) {
       r.distribution = log_binned_density(xi);
     }
     if (x.size() >= 2) r.shape = shape_stats(x, opt, opt.seed + static_cast<std::uint64_t>(c.cycle));
+    r.shape_above_floor = floor_shape_stats(x, out.facet_floor_m2 / out.area_m2, opt,
+                                            opt.seed + 104729 + static_cast<std::uint64_t>(c.cycle));
     r.crease_image = crease_map_image(mesh, c.p, m.creased, ctx.frame, std::max(opt.crease_px, 1));
     r.facet_image = facet_image(seg);
     out.cycles.push_back(std::move(r));

@@ -41,6 +41,9 @@ struct AnalyzeOptions {
   SegmentParams segment;                          ///< closing size, minimum facet pixels
   int crease_px = 1;                              ///< crease line width in pixels
   int bootstrap = 200;                            ///< resamples for the a interval and KS p-value
+  /// The resolution floor of the truncated facet law (fits/truncated_shape.hpp), in mean mesh
+  /// triangles (--facet-floor-triangles): facets smaller than this are left out of that fit.
+  double facet_floor_triangles = 4.0;
   std::uint64_t seed = 1;                         ///< seed of the resampling
   /// The analysing program's version and git revision, written into stats.json beside the
   /// run's own (the app sets them; the library does not know its build).
@@ -60,6 +63,19 @@ struct ShapeStats {
   double a_univ = 0;                             ///< root of (a+1)/a^3 = tau^2 s
   double ks = 0, ks_p = 0;                       ///< KS distance to phi(.; a_fit), bootstrap p
   double ks_univ = 0;                            ///< KS distance to phi(.; a_univ)
+};
+
+/// The same law fitted to the facets at or above the resolution floor only, with its scale free
+/// (fits/truncated_shape.hpp): the comparison with the experiments that the mesh allows.
+struct FloorShapeStats {
+  double floor_x = 0;        ///< the floor, as a fraction of the sheet
+  long n_facets = 0;         ///< facets at or above it
+  double a_fit = 0;          ///< shape of the fitted law
+  double mean_x = 0;         ///< that law's mean area s (fraction of the sheet)
+  double a_univ = 0;         ///< the universal curve at s
+  double law_share_below = 0;  ///< the law's share of facets under the floor
+  double ks = 0, ks_p = 0;   ///< KS distance to the truncated law, parametric-bootstrap p
+  bool at_bound = false;     ///< a or its scale on the edge of the search
 };
 
 struct CycleResult {
@@ -83,6 +99,7 @@ struct CycleResult {
   double mean_x = 0, mean_area_m2 = 0;
   long sheet_px = 0, crease_px = 0, speck_px = 0;
   std::optional<ShapeStats> shape;  ///< absent with fewer than 2 facets
+  std::optional<FloorShapeStats> shape_above_floor;  ///< absent with fewer than 5 facets there
   std::vector<DensityBin> distribution;
   cv::Mat crease_image, facet_image;
 };
@@ -93,6 +110,7 @@ struct RunAnalysis {
   double mean_triangle_area_m2 = 0;  ///< the mesh floor: creases cannot enclose less
   double pixel_floor_m2 = 0;         ///< min_facet_px pixels
   double smallest_resolvable_m2 = 0; ///< the larger of the two floors
+  double facet_floor_m2 = 0;         ///< floor of the truncated facet law (AnalyzeOptions)
   /// The compaction ratio D every cycle recorded, for c1, c2 (run/compaction.hpp); unset, with
   /// compaction_note saying why, when the cycles do not all give one and the same value.
   std::optional<double> compaction;

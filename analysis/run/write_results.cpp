@@ -98,6 +98,7 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
       {"min_facet_px", opt.segment.min_facet_px},
       {"watershed_h_px", opt.segment.watershed_h_px},
       {"bootstrap_resamples", opt.bootstrap},
+      {"facet_floor_triangles", opt.facet_floor_triangles},
       {"seed", opt.seed},
       {"area_bin_ratio", kAreaBinRatio},
       {"tau", kTau}};
@@ -112,7 +113,9 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
   j["resolution"] = {{"mean_triangle_area_m2", res.mean_triangle_area_m2},
                      {"pixel_floor_m2", res.pixel_floor_m2},
                      {"smallest_resolvable_area_m2", res.smallest_resolvable_m2},
-                     {"smallest_resolvable_x", res.smallest_resolvable_m2 / res.area_m2}};
+                     {"smallest_resolvable_x", res.smallest_resolvable_m2 / res.area_m2},
+                     {"facet_floor_m2", res.facet_floor_m2},
+                     {"facet_floor_x", res.facet_floor_m2 / res.area_m2}};
   j["cycles"] = nlohmann::json::array();
   for (const auto& c : res.cycles) {
     nlohmann::json cj = {{"cycle", c.cycle},
@@ -152,6 +155,23 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
       cj["ks_pvalue"] = num(s.ks_p);
       cj["ks_distance_univ"] = num(s.ks_univ);
     }
+    // Flat keys, so that the ensemble averages them as the others (ensemble/ensemble.cpp).
+    if (c.shape_above_floor) {
+      const auto& f = *c.shape_above_floor;
+      cj["floor_x"] = num(f.floor_x);
+      cj["n_facets_above_floor"] = f.n_facets;
+      // On the edge of the search the law is not estimated (the best phi is the limit of the
+      // range, e.g. a -> 0 when the facets above the floor are only a tail): no shape, no mean,
+      // and the KS test is of that limit.
+      const auto est = [&](double v) { return f.at_bound ? nlohmann::json() : num(v); };
+      cj["a_fit_above_floor"] = est(f.a_fit);
+      cj["mean_area_x_above_floor"] = est(f.mean_x);
+      cj["a_univ_above_floor"] = est(f.a_univ);
+      cj["law_share_below_floor"] = est(f.law_share_below);
+      cj["ks_distance_above_floor"] = num(f.ks);
+      cj["ks_pvalue_above_floor"] = num(f.ks_p);
+      cj["fit_above_floor_at_bound"] = f.at_bound;
+    }
     j["cycles"].push_back(cj);
   }
   j["threshold_sensitivity"] = sensitivity_json(res.sensitivity);
@@ -185,7 +205,9 @@ void write_files(const std::filesystem::path& dir, const RunData& run, const Run
   cyc << "cycle,crease_edges,crease_length_m,crease_length_L0,new_crease_length_m,perimeter_P,"
          "n_facets,mean_area_m2,mean_area_x,a_fit,a_fit_lo,a_fit_hi,a_moment,a_univ,ks_distance,"
          "ks_pvalue,new_crease_length_L0,dangling_fraction,n_single_triangle_facets,"
-         "single_triangle_fraction,new_length_share_after_compress,compaction\n";
+         "single_triangle_fraction,new_length_share_after_compress,compaction,"
+         "n_facets_above_floor,a_fit_above_floor,mean_area_x_above_floor,a_univ_above_floor,"
+         "ks_distance_above_floor,ks_pvalue_above_floor\n";
   auto fac = open_out(dir / "facets.csv");
   fac << "cycle,facet_id,area_m2,x,xi,touches_border\n";
   auto dis = open_out(dir / "distribution.csv");
@@ -202,7 +224,18 @@ void write_files(const std::filesystem::path& dir, const RunData& run, const Run
       cyc << ",,,,,,,";
     cyc << ',' << c.new_crease_length_L0 << ',' << Cell{c.dangling_fraction} << ','
         << c.n_single_triangle_facets << ',' << Cell{c.single_triangle_fraction} << ','
-        << Cell{c.new_length_share_after_compress} << ',' << Cell{c.compaction} << '\n';
+        << Cell{c.new_length_share_after_compress} << ',' << Cell{c.compaction};
+    if (c.shape_above_floor) {
+      const auto& f = *c.shape_above_floor;
+      cyc << ',' << f.n_facets;
+      if (f.at_bound)
+        cyc << ",,,";
+      else
+        cyc << ',' << f.a_fit << ',' << f.mean_x << ',' << f.a_univ;
+      cyc << ',' << f.ks << ',' << f.ks_p << '\n';
+    } else {
+      cyc << ",,,,,,\n";
+    }
     for (const auto& f : c.facets)
       fac << c.cycle << ',' << f.id << ',' << f.area_m2 << ',' << f.x << ',' << f.xi << ','
           << (f.touches_border ? 1 : 0) << '\n';

@@ -71,7 +71,16 @@ def facet_rows(ens):
                      "ks_tested": tested, "ks_rejected": rejected,
                      "ks_not_rejecting": tested > 0 and 2 * rejected < tested,
                      "single_triangle_fraction": c.get("single_triangle_fraction_mean"),
-                     "n_facets": c.get("n_facets_mean")})
+                     "n_facets": c.get("n_facets_mean"),
+                     # The law cut at the mesh's resolution floor (analysis/fits/truncated_shape.hpp):
+                     # a_fit there is null in a run whose fit ran to the edge of its range.
+                     "n_facets_above_floor": c.get("n_facets_above_floor_mean"),
+                     "a_fit_above_floor": c.get("a_fit_above_floor_mean"),
+                     "a_fit_above_floor_sem": c.get("a_fit_above_floor_sem"),
+                     "a_univ_above_floor": c.get("a_univ_above_floor_mean"),
+                     "a_fit_above_floor_runs": c.get("a_fit_above_floor_n", 0),
+                     "ks_above_floor_tested": c.get("ks_above_floor_n_tested", 0),
+                     "ks_above_floor_rejected": c.get("ks_above_floor_n_rejected", 0)})
     return rows
 
 
@@ -264,6 +273,24 @@ def report(doc, fig_name):
                  f"{fmt(r['ratio'])} | {yes(r['within_band'])} | {r['ks_rejected']} of {r['ks_tested']} | "
                  f"{fmt(r['single_triangle_fraction'], 2)} |")
     L.append("")
+    floor_rows = [r for r in doc["facets"] if r.get("ks_above_floor_tested")]
+    if floor_rows:
+        L += ["Above the mesh's resolution floor (facets of at least the analysis's "
+              "`--facet-floor-triangles` mean triangles, 4 by default), the same law cut at the floor and "
+              "fitted with its scale free (docs/STATISTICS.md §3.7): a_fit and the universal a at that "
+              "law's mean area where the fit found a maximum inside its range, *edge* where it ran to "
+              "the limit a → 0 of the family (the facets above the floor are then only a falling tail, "
+              "the law's body lies below the floor, and no shape is measured there).", "",
+              "| cycle | facets above the floor | a_fit | a_univ | runs with a shape | KS rejects the cut φ (runs) |",
+              "| --- | --- | --- | --- | --- | --- |"]
+        for r in floor_rows:
+            n_est = r.get("a_fit_above_floor_runs") or 0
+            a = (f"{fmt(r['a_fit_above_floor'])} ± {fmt(r['a_fit_above_floor_sem'], 2)}"
+                 if r.get("a_fit_above_floor") is not None else "edge")
+            L.append(f"| {r['cycle']} | {fmt(r['n_facets_above_floor'])} | {a} | "
+                     f"{fmt(r['a_univ_above_floor'])} | {n_est} of {r['ks_above_floor_tested']} | "
+                     f"{r['ks_above_floor_rejected']} of {r['ks_above_floor_tested']} |")
+        L.append("")
     rows = doc.get("threshold_shape") or []
     L += ["## 4. The growth's shape against the crease threshold", ""]
     if not rows:

@@ -306,6 +306,13 @@ def main():
                  f"parametric-bootstrap p, docs/STATISTICS.md §3.7): {head}. " + "; ".join(kz) + "." + fl)
     else:
         V.append("- **Facet-area distribution**: no KS tests (too few facets).")
+    fl_t = sum(c.get("ks_above_floor_n_tested", 0) for c in cycles)
+    if fl_t:
+        fl_r = sum(c.get("ks_above_floor_n_rejected", 0) for c in cycles)
+        fl_s = sum(c.get("a_fit_above_floor_n", 0) for c in cycles)
+        V.append(f"- **Facets above the resolution floor** (the law cut at the floor, scale free; "
+                 f"section Facet areas): a shape measured in {fl_s} of {fl_t} run-cycles (the others' "
+                 f"fits run to the limit a → 0), the cut φ rejected at 5 % in {fl_r} of {fl_t}.")
     if st.get("available"):
         sh = [(c["cycle"], c["share_after_compress_mean"], c["share_after_compress_sem"],
                c.get("share_after_compress_max")) for c in st["cycles"]
@@ -541,6 +548,26 @@ def main():
             "the facets are single mesh triangles (area below 1.5 × the mean triangle area), above "
             "the 20 % limit: the small-facet end of the distribution, and with it a_fit and the KS "
             "test, is set by the mesh resolution rather than by the crumpling.\n")
+    fl_rows = [c for c in cycles if c.get("ks_above_floor_n_tested")]
+    if fl_rows:
+        ff = shown.get("parameters", {}).get("facet_floor_triangles")
+        add(f"*Above the resolution floor.* The same law cut at the floor (facets of at least "
+            f"{fmt(ff)} mean mesh triangles) and fitted to the facets above it with its scale free "
+            "(docs/STATISTICS.md §3.7, analysis/fits/truncated_shape.hpp); a_univ is the universal "
+            "curve at the fitted law's mean area. Where the fit runs to the family's limit a → 0 the "
+            "facets above the floor are only a falling tail, the law's body lies below the floor, and "
+            "no shape is measured (\"edge\"); the KS test is then of that limit.\n")
+        add("| cycle | facets above the floor (mean) | runs with a shape | a_fit | a_univ | KS at 5 % |")
+        add("|---|---|---|---|---|---|")
+        for c in fl_rows:
+            a = (pm(c["a_fit_above_floor_mean"], c["a_fit_above_floor_sem"])
+                 if c.get("a_fit_above_floor_mean") is not None else "edge")
+            au = (pm(c["a_univ_above_floor_mean"], c["a_univ_above_floor_sem"])
+                  if c.get("a_univ_above_floor_mean") is not None else "–")
+            add(f"| {c['cycle']} | {fmt(c.get('n_facets_above_floor_mean'), '.4g')} | "
+                f"{c.get('a_fit_above_floor_n', 0)}/{c['ks_above_floor_n_tested']} | {a} | {au} | "
+                f"rejected in {c['ks_above_floor_n_rejected']}/{c['ks_above_floor_n_tested']} |")
+        add("")
     if not any(c.get("single_triangle_fraction_mean") is not None for c in cycles):
         add("The single-triangle facet fraction is not in these stats.json files (older "
             "crumple-analyze), so no resolution warning could be computed.\n")

@@ -3,9 +3,10 @@
 docs/studies/NAME/, the report and its figures, the fits (collapse.json, history.json, convergence.json
 and .csv, as the sweep made them; a yield calibration's calibration.json, .csv and CALIBRATION.md;
 make predictions' PREDICTIONS.md and predictions.json; compare_groups.py's COMPARISON.md and
-.json, and any COMPARISON_WHAT.md and .json beside them), and groups.csv, each group's per-cycle ensemble table (mean, s.d. and s.e.m.
-over seeds of the crease lengths, P, facet counts, single-triangle fraction and a_fit). The run
-files stay out (they are binary and large); `make sweep SWEEP=NAME` makes them again, and
+.json, and any COMPARISON_WHAT.md and .json beside them), and groups.csv, each group's per-cycle
+ensemble table (mean, s.d. and s.e.m. over seeds of the crease lengths, P, facet counts,
+single-triangle fraction, a_fit, a_univ and the fit above the resolution floor, and the KS
+tests' counts). The run files stay out (they are binary and large); `make sweep SWEEP=NAME` makes them again, and
 `plot_sweep.py --results docs/studies/NAME --collapse-only` redraws the collapse from the JSON.
 
 usage: keep_study.py --points runs/sweeps/NAME/points.json --results results/NAME --out docs/studies/NAME
@@ -21,7 +22,12 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from common import die, load_ensemble, load_json, sweep_groups  # noqa: E402
 
 QUANTITIES = ("perimeter_P", "crease_length_L0", "new_crease_length_L0", "n_facets",
-              "single_triangle_fraction", "a_fit", "dangling_fraction")
+              "single_triangle_fraction", "a_fit", "dangling_fraction", "a_univ",
+              "n_facets_above_floor", "a_fit_above_floor", "a_univ_above_floor")
+# Counts per group and cycle: runs tested and rejected by the KS tests of the whole-sample law and
+# of the law cut at the resolution floor, and runs whose fit above the floor measured a shape.
+COUNTS = ("ks_n_tested", "ks_n_rejected", "ks_above_floor_n_tested", "ks_above_floor_n_rejected",
+          "a_fit_above_floor_n")
 
 
 def main():
@@ -52,7 +58,7 @@ def main():
         f.write("\n".join(lines[:1] + ["", note] + lines[1:]))
     kept.append("REPORT.md")
     cols = ["group", "compaction", "cycle", "n_runs", "seeds"] + [
-        f"{q}_{s}" for q in QUANTITIES for s in ("mean", "std", "sem")]
+        f"{q}_{s}" for q in QUANTITIES for s in ("mean", "std", "sem")] + list(COUNTS)
     with open(os.path.join(a.out, "groups.csv"), "w", newline="") as f:
         f.write(f"# sweep {pts['name']} ({pts['file']}), preset {pts['preset']}, seeds "
                 f"{' '.join(str(s) for s in pts['seeds'])}: per group and cycle, over seeds\n")

@@ -312,6 +312,11 @@ TEST(Ensemble, KsTalliesStagesAndSensitivity) {
       c["ks_pvalue"] = ks_p[s];
       c["a_fit"] = 1.0 + s;
       c["a_univ"] = 0.5;
+      // Above the floor: seed 1 measured a shape (p = 0.2), seed 2's fit ran to its edge (its
+      // shape null, its KS p = 0.03 still a test).
+      c["ks_pvalue_above_floor"] = s == 0 ? 0.2 : 0.03;
+      c["a_fit_above_floor"] = s == 0 ? J(2.0) : J();
+      c["a_univ_above_floor"] = s == 0 ? J(1.5) : J();
       c["new_length_share_after_compress"] = share[s];
       c["stages"] = J::array({{{"index", 0}, {"stage", "roll"}, {"new_crease_length_L0", 0.0},
                                {"crease_length_L0", 0.0}, {"lost_crease_length_L0", 0.0}},
@@ -335,6 +340,13 @@ TEST(Ensemble, KsTalliesStagesAndSensitivity) {
   EXPECT_TRUE(row["ks_tests"][0]["at_floor"].get<bool>());
   EXPECT_DOUBLE_EQ(row["a_fit_minus_a_univ_mean"].get<double>(), expected({0.5, 1.5}).mean);
   EXPECT_DOUBLE_EQ(row["a_fit_minus_a_univ_sem"].get<double>(), expected({0.5, 1.5}).sem);
+  EXPECT_EQ(row["ks_above_floor_n_tested"], 2);
+  EXPECT_EQ(row["ks_above_floor_n_rejected"], 1);
+  EXPECT_EQ(row["ks_above_floor_n_at_floor"], 0);
+  EXPECT_TRUE(row["ks_above_floor_tests"][1]["rejected"].get<bool>());
+  EXPECT_EQ(row["a_fit_above_floor_n"], 1);
+  EXPECT_DOUBLE_EQ(row["a_fit_above_floor_mean"].get<double>(), 2.0);
+  EXPECT_DOUBLE_EQ(row["a_fit_minus_a_univ_above_floor_mean"].get<double>(), 0.5);
 
   const J& st = e["stages"];
   EXPECT_TRUE(st["available"].get<bool>());
@@ -438,7 +450,8 @@ TEST(Collapse, GlobalFitOverEnsemblesRecoversTheLaw) {
       }
       docs.push_back(stats_doc(s + 1, P, l, D));
     }
-    const fs::path path = dir / ("D" + std::to_string(D) + ".json");
+    // (not "D" + std::to_string(D): GCC 12 warns falsely on operator+(const char*, string&&))
+    const fs::path path = dir / (std::string("D").append(std::to_string(D)).append(".json"));
     write_ensemble(path.string(), ensemble_json(as_runs(docs)));
     inputs.push_back(read_ensemble(path.string()));
   }

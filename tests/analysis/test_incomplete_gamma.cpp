@@ -31,3 +31,18 @@ TEST(IncompleteGamma, LimitsAndDomain) {
   EXPECT_THROW(gamma_p(0.0, 1.0), std::domain_error);
   EXPECT_THROW(gamma_p(1.0, -1.0), std::domain_error);
 }
+
+TEST(IncompleteGamma, ComplementAccurateInTheTail) {
+  using crumple::analysis::gamma_q;
+  for (double x : {1e-4, 0.1, 0.7, 2.5, 6.0, 30.0}) {
+    EXPECT_NEAR(gamma_q(2.0, x) + gamma_p(2.0, x), 1.0, 1e-14) << x;
+    EXPECT_NEAR(gamma_q(0.5, x), std::erfc(std::sqrt(x)), 1e-13 * std::max(1.0, std::erfc(std::sqrt(x)))) << x;
+  }
+  // Where 1 - P has lost every digit, Q keeps its relative accuracy.
+  for (double x : {40.0, 80.0, 300.0}) {
+    EXPECT_NEAR(gamma_q(1.0, x) / std::exp(-x), 1.0, 1e-12) << x;
+    EXPECT_NEAR(gamma_q(3.0, x) / (std::exp(-x) * (1.0 + x + 0.5 * x * x)), 1.0, 1e-12) << x;
+  }
+  EXPECT_EQ(gamma_q(2.0, 0.0), 1.0);
+  EXPECT_THROW(gamma_q(-1.0, 1.0), std::domain_error);
+}
