@@ -51,7 +51,14 @@ def main():
             kept.append(f)
     with open(os.path.join(a.results, "REPORT.md")) as f:
         lines = f.read().split("\n")
-    note = (f"> Kept in the repository by `make keep-study SWEEP={pts['name']}` from "
+    # The command that made it: make keep-study keeps a sweep under its own name; a part of a
+    # sweep kept under another name says the script's own command line.
+    if os.path.normpath(a.out) == os.path.join("docs", "studies", pts["name"]):
+        how = f"make keep-study SWEEP={pts['name']}"
+    else:
+        how = (f"pipeline/sweeps/keep_study.py --points {os.path.relpath(a.points)} "
+               f"--results {os.path.relpath(a.results)} --out {os.path.relpath(a.out)}")
+    note = (f"> Kept in the repository by `{how}` from "
             f"`{os.path.relpath(a.results)}` (runs and ensembles not kept; `groups.csv` holds each "
             f"group's per-cycle table). Paths below are relative to that folder.\n")
     with open(os.path.join(a.out, "REPORT.md"), "w") as f:

@@ -157,6 +157,9 @@ class Expand(unittest.TestCase):
                               "COMPARISON_unfold.md", "REPORT.md", "collapse.json", "groups.csv"])
             report = read(os.path.join(kept, "REPORT.md"))
             self.assertTrue(report.startswith("# Sweep `s`\n\n> Kept in the repository"), report)
+            # Kept outside docs/studies/NAME: the note gives the script's command, not make keep-study.
+            self.assertIn("keep_study.py --points", report)
+            self.assertNotIn("make keep-study", report)
             self.assertIn("body", report)
             rows = [l for l in read(os.path.join(kept, "groups.csv")).splitlines()
                     if not l.startswith("#")]
