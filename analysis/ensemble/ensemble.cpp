@@ -73,7 +73,7 @@ const char* const kKeys[] = {"crease_length_L0", "crease_length_m", "new_crease_
                              // the facet law cut at the resolution floor (fits/truncated_shape.hpp)
                              "n_facets_above_floor", "a_fit_above_floor", "a_univ_above_floor",
                              "mean_area_x_above_floor", "law_share_below_floor",
-                             "ks_pvalue_above_floor"};
+                             "ks_distance_above_floor"};
 // The fitted quantities, P first: it is the experiments' measure (docs/STATISTICS.md §2.1).
 const char* const kFitQuantities[] = {"perimeter_P", "crease_length_L0"};
 constexpr double kKsLevel = 0.05;
@@ -373,10 +373,18 @@ EnsembleJson ensemble_json(const std::vector<RunStats>& inputs) {
     d.clear();
     for (const auto& e : entries) d.push_back(e.a_diff_above_floor);
     put(row, "a_fit_minus_a_univ_above_floor", d);
-    // How many runs measured a shape above the floor (the others' fits ran to the range's edge).
+    // How many runs measured a shape above the floor, and on which edge of the search the
+    // others' fits stopped (fits/truncated_shape.hpp FitEdge).
     int n_shape = 0;
-    for (const auto& e : entries) n_shape += number(*e.cycle, "a_fit_above_floor").has_value();
+    EnsembleJson edges = {{"a_min", 0}, {"a_max", 0}, {"theta", 0}};
+    for (const auto& e : entries) {
+      n_shape += number(*e.cycle, "a_fit_above_floor").has_value();
+      const auto it = e.cycle->find("fit_above_floor_edge");
+      if (it != e.cycle->end() && it->is_string() && edges.contains(it->get<std::string>()))
+        edges[it->get<std::string>()] = edges[it->get<std::string>()].get<int>() + 1;
+    }
     row["a_fit_above_floor_n"] = n_shape;
+    row["fit_above_floor_edges"] = std::move(edges);
     put_ks_tests(row, entries, "ks_pvalue", "ks");
     put_ks_tests(row, entries, "ks_pvalue_above_floor", "ks_above_floor");
     table.push_back(std::move(row));

@@ -25,8 +25,9 @@ double series(double a, double x) {
   return sum * std::exp(log_prefactor(a, x));
 }
 
-// Q(a,x) = prefactor * 1/(x+1-a- 1(1-a)/(x+3-a- 2(2-a)/(x+5-a- ...))), modified Lentz.
-double continued_fraction(double a, double x) {
+// Q(a,x) = prefactor * h, h = 1/(x+1-a- 1(1-a)/(x+3-a- 2(2-a)/(x+5-a- ...))), modified Lentz;
+// returns h.
+double continued_fraction_h(double a, double x) {
   const double tiny = std::numeric_limits<double>::min() / kEps;
   double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
   for (int i = 1; i < kMaxIter; ++i) {
@@ -41,7 +42,11 @@ double continued_fraction(double a, double x) {
     h *= delta;
     if (std::abs(delta - 1.0) < kEps) break;
   }
-  return std::exp(log_prefactor(a, x)) * h;
+  return h;
+}
+
+double continued_fraction(double a, double x) {
+  return std::exp(log_prefactor(a, x)) * continued_fraction_h(a, x);
 }
 
 }  // namespace
@@ -58,6 +63,14 @@ double gamma_q(double a, double x) {
   if (x == 0) return 1.0;
   if (std::isinf(x)) return 0.0;
   return x < a + 1.0 ? 1.0 - series(a, x) : continued_fraction(a, x);
+}
+
+double log_gamma_q(double a, double x) {
+  if (!(a > 0) || !(x >= 0)) throw std::domain_error("log_gamma_q: need a > 0 and x >= 0");
+  if (x == 0) return 0.0;
+  if (std::isinf(x)) return -std::numeric_limits<double>::infinity();
+  return x < a + 1.0 ? std::log1p(-series(a, x))
+                     : log_prefactor(a, x) + std::log(continued_fraction_h(a, x));
 }
 
 }  // namespace crumple::analysis

@@ -13,4 +13,8 @@ double gamma_p(double a, double x);
 /// logarithm stays accurate far in the tail (the truncated facet law divides by it). Same domain.
 double gamma_q(double a, double x);
 
+/// ln Q(a, x), finite where Q itself underflows (far in the tail, x of several hundred and
+/// more). Same domain; -inf at x = inf.
+double log_gamma_q(double a, double x);
+
 }  // namespace crumple::analysis

@@ -77,7 +77,9 @@ double scan_minimize(F f, double lo, double hi, int K, bool& at_bound) {
   const double start = best == 0 || best == K ? 0.5 * (a + b) : at(best);
   double x = brent_minimize(f, a, b, start, iterations, converged);
   if (best_f < f(x)) x = at(best);  // the scan point itself was the lowest (a minimum on a bound)
-  at_bound = x == lo || x == hi;
+  // On an end, or closer to it than Brent's tolerance could resolve.
+  const double tol = 1e-9 * (hi - lo);
+  at_bound = x - lo <= tol || hi - x <= tol;
   return x;
 }
 

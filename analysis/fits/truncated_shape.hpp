@@ -18,6 +18,15 @@
 
 namespace crumple::analysis {
 
+/// Where a fit stopped on the edge of its search instead of at an interior maximum.
+/// a_min: the facets above the floor fall off more steeply than any member of the family with
+/// a > 0 allows (the likelihood still rises towards a = 0; the family has no member there).
+/// a_max: the law would be narrower than a = kTruncAMax. theta: the scale's search range.
+enum class FitEdge { none, a_min, a_max, theta };
+
+/// "a_min", "a_max", "theta", or "" for none.
+const char* fit_edge_name(FitEdge e);
+
 struct TruncatedShapeFit {
   double a = 0;        ///< shape of the untruncated law
   double mean_x = 0;   ///< its mean area s (same units as x)
@@ -27,15 +36,17 @@ struct TruncatedShapeFit {
   /// The law's share of facets below the floor, P(a, y_min / theta): what the fitted law says
   /// the mesh could not make.
   double share_below = 0;
-  bool at_bound = false;  ///< a or theta on the edge of its search range
+  FitEdge edge = FitEdge::none;  ///< on an edge of the search: (a, mean_x) are not estimates
 };
 
-/// Searched ranges: a in [kTruncAMin, kTruncAMax]; theta within a factor e^6 of the untruncated
-/// estimate mean(y) / a.
+/// Searched ranges: a in [kTruncAMin, kTruncAMax]; ln theta from below both the untruncated
+/// estimate ln(mean(y) / a) - 6 and the tail's ln((mean(y) - y_min) / (a + 1)) - 3 up to the
+/// former + 6.
 inline constexpr double kTruncAMin = 0.02, kTruncAMax = 50.0;
 
 /// Maximum-likelihood (a, s) of the areas x >= x_min (others are ignored). Throws
-/// std::invalid_argument when fewer than 5 areas lie at or above x_min or x_min <= 0.
+/// std::invalid_argument when fewer than 5 areas lie at or above x_min or x_min <= 0, and
+/// std::runtime_error when no (a, theta) in range gives the data a finite likelihood.
 TruncatedShapeFit fit_truncated_shape(const std::vector<double>& x, double x_min);
 
 /// CDF of the truncated law at x: (Q(a, y_min/theta) - Q(a, y/theta)) / Q(a, y_min/theta).
@@ -44,14 +55,17 @@ double truncated_cdf(double x, const TruncatedShapeFit& fit);
 /// KS distance between the areas at or above the floor and the truncated law.
 double truncated_ks_distance(const std::vector<double>& x, const TruncatedShapeFit& fit);
 
-/// n areas drawn from the truncated law (rejection from the untruncated one). Throws
-/// std::runtime_error when the law leaves less than 1e-4 of its mass above the floor.
+/// n areas drawn from the truncated law: by rejection from the untruncated law where it keeps at
+/// least 5 % of its mass above the floor, else by inverting the cut CDF (bisection on ln Q).
 std::vector<double> sample_truncated(std::size_t n, const TruncatedShapeFit& fit,
                                      std::uint64_t seed);
 
 /// Parametric-bootstrap p-value of the KS distance d_obs: samples of fit.n areas from the fitted
 /// truncated law, each refitted (a and s) at the same floor, counted as (1 + hits) / (1 +
-/// resamples), as ks_pvalue_parametric (fits/shape_bootstrap.hpp).
+/// resamples), as ks_pvalue_parametric (fits/shape_bootstrap.hpp). Resample b draws from a
+/// generator seeded by a hash of (seed, b), so that nearby seeds share no resamples. At an edge
+/// of the search the fitted law is the edge's and the test approximate (the refits of the
+/// resamples land on the edge only in part).
 double truncated_ks_pvalue(const TruncatedShapeFit& fit, double d_obs, int resamples,
                            std::uint64_t seed);
 

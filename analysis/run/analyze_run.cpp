@@ -45,13 +45,17 @@ ShapeStats shape_stats(const std::vector<double>& x, const AnalyzeOptions& opt,
 }
 
 /// The truncated law over the facets at or above floor_x (fractions of the sheet); nullopt with
-/// fewer than 5 there, or when the fitted law leaves too little mass above the floor to draw
-/// the bootstrap's samples from.
+/// fewer than 5 there, or when no law in the searched range gives them a finite likelihood.
 std::optional<FloorShapeStats> floor_shape_stats(const std::vector<double>& x, double floor_x,
                                                  const AnalyzeOptions& opt, std::uint64_t seed) {
   const auto above = std::count_if(x.begin(), x.end(), [&](double v) { return v >= floor_x; });
   if (above < 5) return std::nullopt;
-  const TruncatedShapeFit fit = fit_truncated_shape(x, floor_x);
+  TruncatedShapeFit fit;
+  try {
+    fit = fit_truncated_shape(x, floor_x);
+  } catch (const std::runtime_error&) {
+    return std::nullopt;
+  }
   FloorShapeStats s;
   s.floor_x = floor_x;
   s.n_facets = static_cast<long>(fit.n);
@@ -59,13 +63,9 @@ std::optional<FloorShapeStats> floor_shape_stats(const std::vector<double>& x, d
   s.mean_x = fit.mean_x;
   s.a_univ = a_universal(fit.mean_x);
   s.law_share_below = fit.share_below;
-  s.at_bound = fit.at_bound;
+  s.edge = fit.edge;
   s.ks = truncated_ks_distance(x, fit);
-  try {
-    s.ks_p = truncated_ks_pvalue(fit, s.ks, opt.bootstrap, seed);
-  } catch (const std::runtime_error&) {
-    return std::nullopt;
-  }
+  s.ks_p = truncated_ks_pvalue(fit, s.ks, opt.bootstrap, seed);
   return s;
 }
 

@@ -13,6 +13,7 @@
 #include "analysis/facets/area_distribution.hpp"
 #include "analysis/facets/segment.hpp"
 #include "analysis/fits/log_law.hpp"
+#include "analysis/fits/truncated_shape.hpp"
 #include "analysis/io/run_data.hpp"
 #include "analysis/run/threshold_sensitivity.hpp"
 
@@ -75,7 +76,9 @@ struct FloorShapeStats {
   double a_univ = 0;         ///< the universal curve at s
   double law_share_below = 0;  ///< the law's share of facets under the floor
   double ks = 0, ks_p = 0;   ///< KS distance to the truncated law, parametric-bootstrap p
-  bool at_bound = false;     ///< a or its scale on the edge of the search
+  /// On an edge of the search (fits/truncated_shape.hpp FitEdge): a_fit, mean_x, a_univ and
+  /// law_share_below are then not estimates, and the KS test is of the edge's law.
+  FitEdge edge = FitEdge::none;
 };
 
 struct CycleResult {
@@ -99,7 +102,8 @@ struct CycleResult {
   double mean_x = 0, mean_area_m2 = 0;
   long sheet_px = 0, crease_px = 0, speck_px = 0;
   std::optional<ShapeStats> shape;  ///< absent with fewer than 2 facets
-  std::optional<FloorShapeStats> shape_above_floor;  ///< absent with fewer than 5 facets there
+  /// Absent with fewer than 5 facets above the floor (or no finite likelihood for them).
+  std::optional<FloorShapeStats> shape_above_floor;
   std::vector<DensityBin> distribution;
   cv::Mat crease_image, facet_image;
 };

@@ -160,17 +160,17 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
       const auto& f = *c.shape_above_floor;
       cj["floor_x"] = num(f.floor_x);
       cj["n_facets_above_floor"] = f.n_facets;
-      // On the edge of the search the law is not estimated (the best phi is the limit of the
-      // range, e.g. a -> 0 when the facets above the floor are only a tail): no shape, no mean,
-      // and the KS test is of that limit.
-      const auto est = [&](double v) { return f.at_bound ? nlohmann::json() : num(v); };
+      // On an edge of the search the law is not estimated (fits/truncated_shape.hpp FitEdge):
+      // no shape, mean or share; the KS test is of the edge's law, and the edge is named.
+      const bool on_edge = f.edge != FitEdge::none;
+      const auto est = [&](double v) { return on_edge ? nlohmann::json() : num(v); };
       cj["a_fit_above_floor"] = est(f.a_fit);
       cj["mean_area_x_above_floor"] = est(f.mean_x);
       cj["a_univ_above_floor"] = est(f.a_univ);
       cj["law_share_below_floor"] = est(f.law_share_below);
       cj["ks_distance_above_floor"] = num(f.ks);
       cj["ks_pvalue_above_floor"] = num(f.ks_p);
-      cj["fit_above_floor_at_bound"] = f.at_bound;
+      cj["fit_above_floor_edge"] = on_edge ? nlohmann::json(fit_edge_name(f.edge)) : nlohmann::json();
     }
     j["cycles"].push_back(cj);
   }
@@ -207,7 +207,8 @@ void write_files(const std::filesystem::path& dir, const RunData& run, const Run
          "ks_pvalue,new_crease_length_L0,dangling_fraction,n_single_triangle_facets,"
          "single_triangle_fraction,new_length_share_after_compress,compaction,"
          "n_facets_above_floor,a_fit_above_floor,mean_area_x_above_floor,a_univ_above_floor,"
-         "ks_distance_above_floor,ks_pvalue_above_floor\n";
+         "law_share_below_floor,ks_distance_above_floor,ks_pvalue_above_floor,"
+         "fit_above_floor_edge\n";
   auto fac = open_out(dir / "facets.csv");
   fac << "cycle,facet_id,area_m2,x,xi,touches_border\n";
   auto dis = open_out(dir / "distribution.csv");
@@ -228,13 +229,13 @@ void write_files(const std::filesystem::path& dir, const RunData& run, const Run
     if (c.shape_above_floor) {
       const auto& f = *c.shape_above_floor;
       cyc << ',' << f.n_facets;
-      if (f.at_bound)
-        cyc << ",,,";
+      if (f.edge != FitEdge::none)
+        cyc << ",,,,";
       else
-        cyc << ',' << f.a_fit << ',' << f.mean_x << ',' << f.a_univ;
-      cyc << ',' << f.ks << ',' << f.ks_p << '\n';
+        cyc << ',' << f.a_fit << ',' << f.mean_x << ',' << f.a_univ << ',' << f.law_share_below;
+      cyc << ',' << f.ks << ',' << f.ks_p << ',' << fit_edge_name(f.edge) << '\n';
     } else {
-      cyc << ",,,,,,\n";
+      cyc << ",,,,,,,,\n";
     }
     for (const auto& f : c.facets)
       fac << c.cycle << ',' << f.id << ',' << f.area_m2 << ',' << f.x << ',' << f.xi << ','

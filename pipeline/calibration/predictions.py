@@ -80,7 +80,8 @@ def facet_rows(ens):
                      "a_univ_above_floor": c.get("a_univ_above_floor_mean"),
                      "a_fit_above_floor_runs": c.get("a_fit_above_floor_n", 0),
                      "ks_above_floor_tested": c.get("ks_above_floor_n_tested", 0),
-                     "ks_above_floor_rejected": c.get("ks_above_floor_n_rejected", 0)})
+                     "ks_above_floor_rejected": c.get("ks_above_floor_n_rejected", 0),
+                     "above_floor_edges": c.get("fit_above_floor_edges") or {}})
     return rows
 
 
@@ -278,17 +279,19 @@ def report(doc, fig_name):
         L += ["Above the mesh's resolution floor (facets of at least the analysis's "
               "`--facet-floor-triangles` mean triangles, 4 by default), the same law cut at the floor and "
               "fitted with its scale free (docs/STATISTICS.md §3.7): a_fit and the universal a at that "
-              "law's mean area where the fit found a maximum inside its range, *edge* where it ran to "
-              "the limit a → 0 of the family (the facets above the floor are then only a falling tail, "
-              "the law's body lies below the floor, and no shape is measured there).", "",
-              "| cycle | facets above the floor | a_fit | a_univ | runs with a shape | KS rejects the cut φ (runs) |",
-              "| --- | --- | --- | --- | --- | --- |"]
+              "law's mean area where the fit found a maximum inside its range. A fit that stops on "
+              "the small-a edge of its search (*a_min*) says the facets above the floor fall off more "
+              "steeply than any member of the family allows; no shape is measured there.", "",
+              "| cycle | facets above the floor | a_fit | a_univ | runs with a shape | fits at a_min | "
+              "KS rejects the cut φ (runs) |",
+              "| --- | --- | --- | --- | --- | --- | --- |"]
         for r in floor_rows:
             n_est = r.get("a_fit_above_floor_runs") or 0
             a = (f"{fmt(r['a_fit_above_floor'])} ± {fmt(r['a_fit_above_floor_sem'], 2)}"
-                 if r.get("a_fit_above_floor") is not None else "edge")
+                 if r.get("a_fit_above_floor") is not None else "–")
             L.append(f"| {r['cycle']} | {fmt(r['n_facets_above_floor'])} | {a} | "
                      f"{fmt(r['a_univ_above_floor'])} | {n_est} of {r['ks_above_floor_tested']} | "
+                     f"{(r.get('above_floor_edges') or {}).get('a_min', 0)} | "
                      f"{r['ks_above_floor_rejected']} of {r['ks_above_floor_tested']} |")
         L.append("")
     rows = doc.get("threshold_shape") or []

@@ -124,6 +124,14 @@ def check_figures(img_dir, fig_format):
     return links
 
 
+def edge_counts(c):
+    """The fits above the floor that stopped on an edge of their search, per edge, or –."""
+    e = c.get("fit_above_floor_edges") or {}
+    parts = [f"{n} {k}" for k, n in (("a_min", e.get("a_min", 0)), ("a_max", e.get("a_max", 0)),
+                                      ("θ", e.get("theta", 0))) if n]
+    return ", ".join(parts) or "–"
+
+
 def image_caption(name, shown):
     """One line on what the image `name` in images/ shows."""
     stem, ext = os.path.splitext(name)
@@ -310,9 +318,13 @@ def main():
     if fl_t:
         fl_r = sum(c.get("ks_above_floor_n_rejected", 0) for c in cycles)
         fl_s = sum(c.get("a_fit_above_floor_n", 0) for c in cycles)
+        edges = {k: sum((c.get("fit_above_floor_edges") or {}).get(k, 0) for c in cycles)
+                 for k in ("a_min", "a_max", "theta")}
         V.append(f"- **Facets above the resolution floor** (the law cut at the floor, scale free; "
-                 f"section Facet areas): a shape measured in {fl_s} of {fl_t} run-cycles (the others' "
-                 f"fits run to the limit a → 0), the cut φ rejected at 5 % in {fl_r} of {fl_t}.")
+                 f"section Facet areas): a shape measured in {fl_s} of {fl_t} run-cycles; fits on an "
+                 f"edge of the search: {edges['a_min']} at a_min (steeper than any member of the "
+                 f"family), {edges['a_max']} at a_max, {edges['theta']} on the scale's range; the "
+                 f"cut φ rejected at 5 % in {fl_r} of {fl_t}.")
     if st.get("available"):
         sh = [(c["cycle"], c["share_after_compress_mean"], c["share_after_compress_sem"],
                c.get("share_after_compress_max")) for c in st["cycles"]
@@ -554,18 +566,21 @@ def main():
         add(f"*Above the resolution floor.* The same law cut at the floor (facets of at least "
             f"{fmt(ff)} mean mesh triangles) and fitted to the facets above it with its scale free "
             "(docs/STATISTICS.md §3.7, analysis/fits/truncated_shape.hpp); a_univ is the universal "
-            "curve at the fitted law's mean area. Where the fit runs to the family's limit a → 0 the "
-            "facets above the floor are only a falling tail, the law's body lies below the floor, and "
-            "no shape is measured (\"edge\"); the KS test is then of that limit.\n")
-        add("| cycle | facets above the floor (mean) | runs with a shape | a_fit | a_univ | KS at 5 % |")
-        add("|---|---|---|---|---|---|")
+            "curve at the fitted law's mean area. A fit that stops on an edge of its search measures "
+            "no shape (counted per edge: *a_min*, the facets above the floor fall off more steeply "
+            "than any member of the family allows; *a_max*, narrower than a = 50; *θ*, the scale's "
+            "range); the KS test is then of the edge's law, and approximate.\n")
+        add("| cycle | facets above the floor (mean) | runs with a shape | a_fit | a_univ | "
+            "fits on an edge | KS at 5 % |")
+        add("|---|---|---|---|---|---|---|")
         for c in fl_rows:
             a = (pm(c["a_fit_above_floor_mean"], c["a_fit_above_floor_sem"])
-                 if c.get("a_fit_above_floor_mean") is not None else "edge")
+                 if c.get("a_fit_above_floor_mean") is not None else "–")
             au = (pm(c["a_univ_above_floor_mean"], c["a_univ_above_floor_sem"])
                   if c.get("a_univ_above_floor_mean") is not None else "–")
             add(f"| {c['cycle']} | {fmt(c.get('n_facets_above_floor_mean'), '.4g')} | "
                 f"{c.get('a_fit_above_floor_n', 0)}/{c['ks_above_floor_n_tested']} | {a} | {au} | "
+                f"{edge_counts(c)} | "
                 f"rejected in {c['ks_above_floor_n_rejected']}/{c['ks_above_floor_n_tested']} |")
         add("")
     if not any(c.get("single_triangle_fraction_mean") is not None for c in cycles):

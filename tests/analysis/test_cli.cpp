@@ -108,7 +108,7 @@ TEST(CrumpleAnalyze, SyntheticRunEndToEnd) {
   while (column(csv[0], k_comp) != "compaction" && k_comp < 100) ++k_comp;
   ASSERT_LT(k_comp, 100u) << csv[0];
   EXPECT_EQ(std::stod(column(csv[1], k_comp)), D);
-  EXPECT_EQ(csv[0].substr(csv[0].rfind(',') + 1), "ks_pvalue_above_floor");
+  EXPECT_EQ(csv[0].substr(csv[0].rfind(',') + 1), "fit_above_floor_edge");
   EXPECT_TRUE(c[2].contains("a_fit") && c[2].contains("ks_pvalue"));
   // An older file: no /stage_ends, so no per-stage data, said in a warning; no c0 in the
   // config, so the default c0 with a warning.

@@ -317,6 +317,7 @@ TEST(Ensemble, KsTalliesStagesAndSensitivity) {
       c["ks_pvalue_above_floor"] = s == 0 ? 0.2 : 0.03;
       c["a_fit_above_floor"] = s == 0 ? J(2.0) : J();
       c["a_univ_above_floor"] = s == 0 ? J(1.5) : J();
+      c["fit_above_floor_edge"] = s == 0 ? J() : J("a_min");
       c["new_length_share_after_compress"] = share[s];
       c["stages"] = J::array({{{"index", 0}, {"stage", "roll"}, {"new_crease_length_L0", 0.0},
                                {"crease_length_L0", 0.0}, {"lost_crease_length_L0", 0.0}},
@@ -345,6 +346,8 @@ TEST(Ensemble, KsTalliesStagesAndSensitivity) {
   EXPECT_EQ(row["ks_above_floor_n_at_floor"], 0);
   EXPECT_TRUE(row["ks_above_floor_tests"][1]["rejected"].get<bool>());
   EXPECT_EQ(row["a_fit_above_floor_n"], 1);
+  EXPECT_EQ(row["fit_above_floor_edges"]["a_min"], 1);
+  EXPECT_EQ(row["fit_above_floor_edges"]["a_max"], 0);
   EXPECT_DOUBLE_EQ(row["a_fit_above_floor_mean"].get<double>(), 2.0);
   EXPECT_DOUBLE_EQ(row["a_fit_minus_a_univ_above_floor_mean"].get<double>(), 0.5);
 

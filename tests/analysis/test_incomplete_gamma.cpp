@@ -46,3 +46,17 @@ TEST(IncompleteGamma, ComplementAccurateInTheTail) {
   EXPECT_EQ(gamma_q(2.0, 0.0), 1.0);
   EXPECT_THROW(gamma_q(-1.0, 1.0), std::domain_error);
 }
+
+TEST(IncompleteGamma, LogComplementWhereQUnderflows) {
+  using crumple::analysis::gamma_q;
+  using crumple::analysis::log_gamma_q;
+  for (double x : {1e-3, 0.5, 3.0, 40.0})
+    EXPECT_NEAR(log_gamma_q(2.5, x), std::log(gamma_q(2.5, x)), 1e-12) << x;
+  // Q(1, x) = e^-x and Q(3, x) = e^-x (1 + x + x^2/2): their logs far past underflow of Q.
+  for (double x : {800.0, 5000.0}) {
+    EXPECT_EQ(gamma_q(1.0, x), 0.0);
+    EXPECT_NEAR(log_gamma_q(1.0, x), -x, 1e-9 * x) << x;
+    EXPECT_NEAR(log_gamma_q(3.0, x), -x + std::log(1.0 + x + 0.5 * x * x), 1e-9 * x) << x;
+  }
+  EXPECT_EQ(log_gamma_q(2.0, 0.0), 0.0);
+}

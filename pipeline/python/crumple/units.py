@@ -44,6 +44,11 @@ ANALYSIS_UNITS = {
     "facet_id": "1", "area_m2": "m^2", "x": "sheet area", "xi": "mean x",
     "touches_border": "bool", "bin_lo": "mean x", "bin_hi": "mean x", "count": "1",
     "density": "1 / (mean x)",
+    # the facet law cut at the resolution floor (analysis/fits/truncated_shape.hpp)
+    "n_facets_above_floor": "1", "a_fit_above_floor": "1", "a_univ_above_floor": "1",
+    "mean_area_x_above_floor": "sheet area", "law_share_below_floor": "1",
+    "ks_distance_above_floor": "1", "ks_pvalue_above_floor": "1",
+    "fit_above_floor_edge": "- (edge of the search: a_min, a_max, theta)",
 }
 
 
