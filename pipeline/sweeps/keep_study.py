@@ -28,6 +28,8 @@ QUANTITIES = ("perimeter_P", "crease_length_L0", "new_crease_length_L0", "n_face
 # of the law cut at the resolution floor, and runs whose fit above the floor measured a shape.
 COUNTS = ("ks_n_tested", "ks_n_rejected", "ks_above_floor_n_tested", "ks_above_floor_n_rejected",
           "a_fit_above_floor_n")
+# The fits above the floor that stopped on each edge of their search (FitEdge).
+EDGES = ("a_min", "a_max", "theta")
 
 
 def main():
@@ -65,7 +67,8 @@ def main():
         f.write("\n".join(lines[:1] + ["", note] + lines[1:]))
     kept.append("REPORT.md")
     cols = ["group", "compaction", "cycle", "n_runs", "seeds"] + [
-        f"{q}_{s}" for q in QUANTITIES for s in ("mean", "std", "sem")] + list(COUNTS)
+        f"{q}_{s}" for q in QUANTITIES for s in ("mean", "std", "sem")] + list(COUNTS) + [
+        f"fit_above_floor_at_{e}_n" for e in EDGES]
     with open(os.path.join(a.out, "groups.csv"), "w", newline="") as f:
         f.write(f"# sweep {pts['name']} ({pts['file']}), preset {pts['preset']}, seeds "
                 f"{' '.join(str(s) for s in pts['seeds'])}: per group and cycle, over seeds\n")
@@ -75,8 +78,10 @@ def main():
             e = load_ensemble(os.path.join(a.results, "groups", g, "ensemble.json"))
             seeds = " ".join(str(s) for s in e.get("seeds", []))
             for row in e["cycles"]:
+                edges = row.get("fit_above_floor_edges") or {}
                 w.writerow([g, row.get("compaction"), row["cycle"], row.get("n_runs"), seeds] +
-                           [row.get(c) for c in cols[5:]])
+                           [row.get(c) for c in cols[5:len(cols) - len(EDGES)]] +
+                           [edges.get(e) for e in EDGES])
     kept.append("groups.csv")
     print(f"keep_study: {a.out}: {', '.join(kept)}")
 
