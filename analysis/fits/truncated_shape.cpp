@@ -116,20 +116,30 @@ TruncatedShapeFit fit_truncated_shape(const std::vector<double>& x, double x_min
   return fit(sufficient(x, x_min), x_min);
 }
 
-double truncated_cdf(double x, const TruncatedShapeFit& f) {
-  if (x <= f.x_min) return 0.0;
-  const double theta = theta_of(f);
-  // 1 - Q(a, t) / Q(a, t_min), in logs so that it holds where Q underflows.
-  return -std::expm1(log_gamma_q(f.a, std::sqrt(x) / theta) -
-                     log_gamma_q(f.a, std::sqrt(f.x_min) / theta));
-}
+namespace {
+
+/// The cut CDF with ln Q(a, t_min) computed once: 1 - Q(a, t) / Q(a, t_min), in logs so that it
+/// holds where Q underflows.
+struct CutCdf {
+  double a, theta, x_min, lq_min;
+  explicit CutCdf(const TruncatedShapeFit& f)
+      : a(f.a), theta(theta_of(f)), x_min(f.x_min),
+        lq_min(log_gamma_q(f.a, std::sqrt(f.x_min) / theta)) {}
+  double operator()(double x) const {
+    return x <= x_min ? 0.0 : -std::expm1(log_gamma_q(a, std::sqrt(x) / theta) - lq_min);
+  }
+};
+
+}  // namespace
+
+double truncated_cdf(double x, const TruncatedShapeFit& f) { return CutCdf(f)(x); }
 
 double truncated_ks_distance(const std::vector<double>& x, const TruncatedShapeFit& f) {
   std::vector<double> above;
   for (double v : x)
     if (v >= f.x_min) above.push_back(v);
   std::sort(above.begin(), above.end());
-  return ks_distance_sorted(above, [&f](double v) { return truncated_cdf(v, f); });
+  return ks_distance_sorted(above, CutCdf(f));
 }
 
 std::vector<double> sample_truncated(std::size_t n, const TruncatedShapeFit& f,
