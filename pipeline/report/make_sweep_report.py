@@ -95,6 +95,7 @@ def convergence_section(add, doc):
             add(f"| {row['cycle']} | " + " | ".join(cells) + f" | {est} | {order} |")
         add("")
     add("![convergence of P](convergence.png)\n")
+    paired_section(add, doc.get("paired_steps") or [])
     pre = doc.get("presets", {})
     lines = []
     for name, v in pre.items():
@@ -121,6 +122,39 @@ def convergence_section(add, doc):
             "*noise*, the rungs' errors are less certain than their quoted s.e.m."
             + (f" Largest |error| + 2 s.e.m. of P over the cycles: {bound}." if bound else "")
             + cover + "\n")
+
+
+def paired_section(add, steps):
+    """Each statistic's ratio between neighbouring rungs taken seed by seed (convergence.py's
+    paired_steps): a table per step, cycles down, statistics across."""
+    steps = [s for s in steps if s["rows"]]
+    if not steps:
+        return
+    add("**Paired by seed.** Each seed's ratio of a statistic between neighbouring rungs, fine / "
+        "coarse, mean ± s.e.m. over the seeds both rungs ran. A seed that makes the same random "
+        "choices on every mesh (the axial protocol's roll axes) shares their effect at both "
+        "rungs, so the paired ratio leaves out the spread they cause between seeds, which the "
+        "independent means above carry. * marks a ratio more than 2 s.e.m. from 1: a change with "
+        "resolution that the seeds resolve.\n")
+    for step in steps:
+        labels = {}
+        for r in step["rows"]:
+            labels.setdefault(r["quantity"], r["label"])
+        add(f"{step['fine']} / {step['coarse']} nodes (seeds "
+            f"{', '.join(str(s) for s in step['seeds'])}):\n")
+        add("| cycle | " + " | ".join(labels.values()) + " |")
+        add("| --- | " + " | ".join("---" for _ in labels) + " |")
+        for n in sorted({r["cycle"] for r in step["rows"]}):
+            cells = []
+            for q in labels:
+                r = next((x for x in step["rows"] if x["quantity"] == q and x["cycle"] == n), None)
+                if r is None or r["mean"] is None:
+                    cells.append("–")
+                    continue
+                mark = " *" if r["sem"] and abs(r["mean"] - 1) > 2 * r["sem"] else ""
+                cells.append(pm(r["mean"], r["sem"]) + mark)
+            add(f"| {n} | " + " | ".join(cells) + " |")
+        add("")
 
 
 def unstable_note(redrawn):

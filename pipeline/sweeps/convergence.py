@@ -23,6 +23,14 @@ one that fewer than 84 % of them give an estimate shows no rung within a toleran
 change between the finest two rungs is within twice their combined s.e.m. the row says the
 difference is not resolved by the seeds (the extrapolation is then mostly noise).
 
+Paired by seed: the rungs run the same seeds, and where a seed makes the same random choices on
+every mesh (the axial protocol's roll axes; the mesh has its own seed), a seed's runs at two
+rungs share what those choices do to them. Each statistic's ratio fine / coarse is therefore
+also taken seed by seed between neighbouring rungs, over the seeds both ran: its mean and the
+s.e.m. of that mean over the seeds (convergence.json "paired_steps", convergence_paired.csv).
+Where the choices make most of the seed-to-seed spread, as in axial crumpling, the paired
+ratio is far tighter than the ratio of two independent means; where they do not, it is no worse.
+
 Writes RESULTS/convergence.json and RESULTS/convergence.csv, and names the coarsest rung from
 which on P per cycle is within 15 % and within 5 % of its estimate in every cycle and at every
 finer rung (the presets' rule): at face value, and shown, where the error and twice its s.e.m.
@@ -263,6 +271,46 @@ def table(points, results):
     return rungs, rows
 
 
+def paired_steps(points, rungs):
+    """Between each pair of neighbouring rungs (coarse to fine), per statistic and cycle, each
+    common seed's ratio fine / coarse from the runs' stats.json, with the mean and s.e.m. over
+    those seeds. A seed whose coarse value is zero or either value missing is left out of that
+    row (its "seeds" say which entered); one seed gives a mean without an s.e.m."""
+    analyses = {}
+    for p in points["points"]:
+        analyses.setdefault(p["group"], {})[p["seed"]] = p["analysis"]
+    cache = {}
+
+    def cycles(group, seed):
+        if (group, seed) not in cache:
+            path = os.path.join(analyses[group][seed], "stats.json")
+            cache[(group, seed)] = {c["cycle"]: c for c in
+                                    load_json(path, "stats.json").get("cycles", [])}
+        return cache[(group, seed)]
+
+    steps = []
+    for lo, hi in zip(rungs, rungs[1:]):
+        seeds = sorted(set(analyses.get(lo["group"], {})) & set(analyses.get(hi["group"], {})))
+        numbers = sorted(set.intersection(*[set(cycles(g, s)) for s in seeds
+                                             for g in (lo["group"], hi["group"])])) if seeds else []
+        rows = []
+        for key, label, unit in QUANTITIES:
+            for n in numbers:
+                used, ratios = [], []
+                for s in seeds:
+                    a, b = cycles(lo["group"], s)[n].get(key), cycles(hi["group"], s)[n].get(key)
+                    if has_mean(a) and has_mean(b) and a != 0:
+                        used.append(s)
+                        ratios.append(b / a)
+                k = len(ratios)
+                mean = float(np.mean(ratios)) if k else None
+                sem = float(np.std(ratios, ddof=1) / math.sqrt(k)) if k >= 2 else None
+                rows.append({"quantity": key, "label": label, "cycle": n, "seeds": used,
+                             "ratios": ratios, "mean": mean, "sem": sem})
+        steps.append({"coarse": lo["nodes"], "fine": hi["nodes"], "seeds": seeds, "rows": rows})
+    return steps
+
+
 def recompute(doc):
     """The rows of a kept convergence.json made again from the rungs' means and s.e.m. it
     holds (a kept study keeps no runs): how a change to the estimate or its errors reaches the
@@ -318,9 +366,11 @@ def largest_error_bound(rows, rungs, key, nodes):
     return max(b) if b and None not in b else None
 
 
-def document(sweep, rungs, rows):
-    """convergence.json: rungs [{"group", "nodes", "h_m", "runs", "seeds"}] coarse to fine."""
+def document(sweep, rungs, rows, paired=None):
+    """convergence.json: rungs [{"group", "nodes", "h_m", "runs", "seeds"}] coarse to fine;
+    paired: paired_steps' list (a kept study made before it has none)."""
     return {"sweep": sweep,
+            "paired_steps": paired or [],
             "resolution_note": "h = sqrt(sheet area / triangles), m; Q(h) = Q* + C h^p",
             "rungs": rungs,
             "presets": {name: {"tolerance": tol,
@@ -352,7 +402,21 @@ def write(results, doc):
                             r.get("estimate_sem"), r.get("order"), g["rel_error"],
                             g["rel_error_sem"]])
     os.replace(out_csv + ".new", out_csv)
-    return out, out_csv
+    outs = (out, out_csv)
+    if doc.get("paired_steps"):
+        out_pair = os.path.join(results, "convergence_paired.csv")
+        with open(out_pair + ".new", "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["quantity", "cycle", "coarse_nodes", "fine_nodes", "seeds", "mean_ratio",
+                        "sem", "ratios"])
+            for step in doc["paired_steps"]:
+                for r in step["rows"]:
+                    w.writerow([r["quantity"], r["cycle"], step["coarse"], step["fine"],
+                                " ".join(str(s) for s in r["seeds"]), r["mean"], r["sem"],
+                                " ".join(f"{x:.6g}" for x in r["ratios"])])
+        os.replace(out_pair + ".new", out_pair)
+        outs += (out_pair,)
+    return outs
 
 
 def refresh_kept(folder):
@@ -360,7 +424,7 @@ def refresh_kept(folder):
     it holds, and its REPORT.md's convergence section rewritten to match."""
     src = os.path.join(folder, "convergence.json")
     old = load_json(src, "kept convergence table")
-    doc = document(old["sweep"], old["rungs"], recompute(old))
+    doc = document(old["sweep"], old["rungs"], recompute(old), old.get("paired_steps"))
     outs = write(folder, doc)
     report = os.path.join(folder, "REPORT.md")
     if os.path.isfile(report):
@@ -406,10 +470,10 @@ def main():
     doc = document(points["name"],
                    [{k: r[k] for k in ("group", "nodes", "h_m")}
                     | {"runs": r["ensemble"]["n_runs"], "seeds": r["ensemble"]["seeds"]}
-                    for r in rungs], rows)
-    out, out_csv = write(a.results, doc)
+                    for r in rungs], rows, paired_steps(points, rungs))
+    outs = write(a.results, doc)
     print(f"convergence.py: {len(rungs)} rungs ({', '.join(str(r['nodes']) for r in rungs)} "
-          f"nodes), {len(rows)} rows -> {out}, {out_csv}")
+          f"nodes), {len(rows)} rows -> {', '.join(outs)}")
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Keeps a sweep's result in the repository without its runs: from results/NAME (make sweep) to
-docs/studies/NAME/, the report and its figures, the fits (collapse.json, history.json, convergence.json
-and .csv, as the sweep made them; a yield calibration's calibration.json, .csv and CALIBRATION.md;
+docs/studies/NAME/, the report and its figures, the fits (collapse.json, history.json, convergence.json,
+.csv and convergence_paired.csv, as the sweep made them; a yield calibration's calibration.json, .csv and CALIBRATION.md;
 make predictions' PREDICTIONS.md and predictions.json; compare_groups.py's COMPARISON.md and
 .json, and any COMPARISON_WHAT.md and .json beside them), and groups.csv, each group's per-cycle
 ensemble table (mean, s.d. and s.e.m. over seeds of the crease lengths, P, facet counts,
@@ -44,7 +44,7 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     kept = []
     for f in ("collapse.json", "history.json", "convergence.json", "convergence.csv",
-              "calibration.json", "calibration.csv", "CALIBRATION.md", "predictions.json", "PREDICTIONS.md",
+              "convergence_paired.csv", "calibration.json", "calibration.csv", "CALIBRATION.md", "predictions.json", "PREDICTIONS.md",
               *sorted(os.path.basename(c) for c in glob.glob(os.path.join(a.results, "COMPARISON*"))
                       if c.endswith((".md", ".json"))),
               "crease_length.png", "collapse.png", "convergence.png", "calibration.png", "predictions.png"):

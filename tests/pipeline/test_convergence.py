@@ -392,6 +392,71 @@ class Convergence(unittest.TestCase):
             self.assertEqual(r.returncode, 2)
             self.assertIn("mesh.nodes", r.stderr)
 
+    def test_paired_by_seed(self):
+        """Each seed's ratio fine / coarse between neighbouring rungs, over the seeds both ran:
+        the mean and s.e.m. of the per-seed ratios (exact here), a seed that only one rung ran
+        or with a zero coarse value left out, and the report's paired table marking a ratio
+        more than 2 s.e.m. from 1. A seed-level offset shared by both rungs cancels in the
+        ratio, where the independent means keep it."""
+        with tempfile.TemporaryDirectory() as tmp:
+            ladder(tmp, {3000: [10.0, 20.0], 6000: [11.0, 20.0]}, sem=2.0)
+            with open(os.path.join(tmp, "points.json")) as f:
+                pts = json.load(f)
+            pts["points"] = []
+            # P at 3000 nodes per seed; 6000 nodes is 10 % higher in cycle 1 on average (seed 2
+            # +12 %, seed 3 +8 %) and the same in cycle 2 (seed 2 +2 %, seed 3 -2 %); seed 4 ran
+            # only at 3000 nodes, seed 5's coarse a_fit is zero.
+            base = {1: (8.0, 15.0), 2: (10.0, 20.0), 3: (12.0, 25.0), 4: (9.0, 9.0),
+                    5: (11.0, 22.0)}
+            fine = {1: (8.8, 15.0), 2: (11.2, 20.4), 3: (12.96, 24.5), 5: (12.1, 22.0)}
+            for nodes, vals in ((3000, base), (6000, fine)):
+                for s, (p1, p2) in vals.items():
+                    an = os.path.join(tmp, "runs", f"nodes-{nodes}", f"seed{s}.analysis")
+                    os.makedirs(an, exist_ok=True)
+                    cyc = [{"cycle": n, "perimeter_P": p, "crease_length_L0": 2 * p,
+                            "n_facets": 100.0, "single_triangle_fraction": 0.5,
+                            "a_fit": 0.0 if (s == 5 and nodes == 3000) else 1.0,
+                            "dangling_fraction": 0.3} for n, p in ((1, p1), (2, p2))]
+                    with open(os.path.join(an, "stats.json"), "w") as f:
+                        json.dump({"sheet": {"nodes": nodes, "triangles": 2 * nodes,
+                                             "area_m2": AREA}, "cycles": cyc}, f)
+                    pts["points"].append({"group": f"nodes-{nodes}", "seed": s, "analysis": an})
+            with open(os.path.join(tmp, "points.json"), "w") as f:
+                json.dump(pts, f)
+            doc = run(tmp)
+            self.assertEqual(len(doc["paired_steps"]), 1)
+            step = doc["paired_steps"][0]
+            self.assertEqual((step["coarse"], step["fine"], step["seeds"]), (3000, 6000, [1, 2, 3, 5]))
+            rows = {(r["quantity"], r["cycle"]): r for r in step["rows"]}
+            p1 = rows[("perimeter_P", 1)]
+            self.assertEqual(p1["seeds"], [1, 2, 3, 5])
+            p2 = rows[("perimeter_P", 2)]
+            for row, ratios in ((p1, [1.1, 1.12, 1.08, 1.1]), (p2, [1.0, 1.02, 0.98, 1.0])):
+                m = sum(ratios) / 4
+                self.assertAlmostEqual(row["mean"], m, places=12)
+                self.assertAlmostEqual(row["sem"], math.sqrt(sum((x - m) ** 2 for x in ratios)
+                                                             / 3 / 4), places=12)
+            self.assertEqual(rows[("a_fit", 1)]["seeds"], [1, 2, 3])
+            # The independent means do not see the 10 % in cycle 1 within twice their s.e.m.;
+            # the paired ratio does, and the report marks it.
+            text = section(doc)
+            self.assertIn("**Paired by seed.**", text)
+            self.assertIn("6000 / 3000 nodes (seeds 1, 2, 3, 5):", text)
+            self.assertIn("| 1 | 1.1 ± 0.0082 * |", text)
+            self.assertIn("| 2 | 1 ± 0.0082 |", text)
+            with open(os.path.join(tmp, "convergence_paired.csv")) as f:
+                lines = f.read().splitlines()
+            self.assertEqual(lines[0], "quantity,cycle,coarse_nodes,fine_nodes,seeds,mean_ratio,"
+                             "sem,ratios")
+            self.assertEqual(len(lines), 1 + 6 * 2)
+            # A kept study keeps its paired steps when refreshed (it has no runs to redo them).
+            os.rename(os.path.join(tmp, "runs"), os.path.join(tmp, "gone"))
+            r = subprocess.run([sys.executable, SCRIPT, "--refresh-kept", tmp],
+                               capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(os.path.join(tmp, "convergence.json")) as f:
+                self.assertEqual(json.load(f)["paired_steps"], doc["paired_steps"])
+
     def test_figure_and_report_section(self):
         with tempfile.TemporaryDirectory() as tmp:
             ladder(tmp, {n: [exact(n, 50, 4e4, 2), exact(n, 80, 8e4, 2)]
