@@ -61,11 +61,12 @@ $(SWEEP_RESULTS)/REPORT.md: $(SWEEP_ENSEMBLES) $(SWEEP_DIR)/points.json $(ANALYZ
 	$(PYTHON) pipeline/report/make_sweep_report.py --points $(SWEEP_DIR)/points.json \
 	  --results $(SWEEP_RESULTS) -o $@
 
-# make convergence: the resolution ladder of issue 36 (pipeline/sweeps/convergence.yaml), 3000 to
-# 24000 nodes; SWEEP_GROUPS="nodes-3000 nodes-6000" runs the rungs a small machine
-# affords first, and the report says which are left.
+# make convergence: the protocol's resolution ladder of issue 36
+# (pipeline/sweeps/convergence_flat_unfold.yaml), 3000 to 24000 nodes; SWEEP_GROUPS="nodes-3000
+# nodes-6000" runs the rungs a small machine affords first, and the report says which are left.
+# The ladder at the former unfold is SWEEP=convergence (make sweep).
 convergence:
-	$(MAKE) --no-print-directory sweep SWEEP=convergence
+	$(MAKE) --no-print-directory sweep SWEEP=convergence_flat_unfold
 
 # make keep-study SWEEP=NAME: the sweep's report, figures, fits and per-group tables (no runs)
 # into docs/studies/NAME/, to be committed (pipeline/sweeps/keep_study.py).

@@ -39,14 +39,16 @@ $(CAL_OUT)/FOLD_CALIBRATION.md: $(CAL_RUNS) pipeline/calibration/fold_calibratio
 	$(PYTHON) pipeline/calibration/fold_calibration.py -o $(CAL_OUT) $(CAL_RUNS)
 
 # make calibrate-yield: the one fitted material constant, the yield radius (issue 36;
-# docs/SCIENCE.md). Runs the yield_radius_calibration sweep (pipeline/sweeps/
-# yield_radius_calibration.yaml: one cycle at Δ̃ = 0.27 for a bracket of material.yield_radius,
-# 3 seeds, 3000 nodes, creases above the protocol's 18.3 degrees; resumable) and finds the radius
-# at which P after cycle 1 meets the experiments' law (pipeline/calibration/yield_calibration.py):
-# results/yield_radius_calibration/CALIBRATION.md, calibration.json, .csv and the figure. About
-# 15 minutes on 2 cores. CALIBRATE_SWEEP=yield_calibration redoes the former calibration of a
-# yield angle at 1500 nodes (docs/studies/yield_calibration/).
-CALIBRATE_SWEEP ?= yield_radius_calibration
+# docs/SCIENCE.md). Runs the protocol's calibration sweep (pipeline/sweeps/
+# yield_radius_calibration_flat_unfold.yaml: one cycle at Δ̃ = 0.27 with the protocol's unfold
+# for a bracket of material.yield_radius, 3 seeds, 3000 nodes, creases above the protocol's 18.3
+# degrees; resumable) and finds the radius at which P after cycle 1 meets the experiments' law
+# (pipeline/calibration/yield_calibration.py): results/yield_radius_calibration_flat_unfold/
+# CALIBRATION.md, calibration.json, .csv and the figure. About 15 minutes on 2 cores.
+# CALIBRATE_SWEEP=yield_radius_calibration redoes the calibration at the former unfold
+# (flatten_length 0.05, docs/studies/yield_radius_calibration/), CALIBRATE_SWEEP=yield_calibration
+# the older one of a yield angle at 1500 nodes (docs/studies/yield_calibration/).
+CALIBRATE_SWEEP ?= yield_radius_calibration_flat_unfold
 .PHONY: calibrate-yield
 calibrate-yield:
 	$(MAKE) --no-print-directory sweep SWEEP=$(CALIBRATE_SWEEP)
@@ -57,17 +59,20 @@ calibrate-yield:
 # make predictions: the calibrated simulation beside the experiments (issue 36, item 4;
 # pipeline/calibration/predictions.py): P per cycle at Δ̃ = 0.27, n0, the compaction sweep's global
 # c1, c2 and collapse, and the facet-area shape per cycle, each against its goal, from the
-# compaction sweep at the protocol's calibrated yield radius (make sweep SWEEP=compaction, 3000
-# nodes, resumable; PREDICT_GROUPS limits it to some compactions and PREDICT_SEEDS to some seeds,
-# and the report says which were fitted). The calibration is the kept one the protocol states
-# (docs/studies/yield_radius_calibration/). Writes results/compaction/PREDICTIONS.md,
-# predictions.json and the figure beside the sweep's report, so that make keep-study
-# SWEEP=compaction keeps them too. PREDICT_SWEEP and PREDICT_CALIBRATION name another compaction
-# sweep and the calibration of its material (pipeline/sweeps/compaction_flat_unfold.yaml).
+# compaction sweep of the protocol's material (pipeline/sweeps/compaction_flat_unfold.yaml: the
+# flatter unfold, R_y = 3.34 mm; 3000 nodes, resumable; PREDICT_GROUPS limits it to some
+# compactions and PREDICT_SEEDS to some seeds, and the report says which were fitted). The
+# calibration is the kept one the protocol states
+# (docs/studies/yield_radius_calibration_flat_unfold/). Writes PREDICTIONS.md, predictions.json
+# and the figure into results/compaction_flat_unfold/ beside the sweep's report, so that
+# make keep-study SWEEP=compaction_flat_unfold keeps them too. PREDICT_SWEEP and
+# PREDICT_CALIBRATION name another compaction sweep and the calibration of its material: the
+# former unfold is PREDICT_SWEEP=compaction
+# PREDICT_CALIBRATION=docs/studies/yield_radius_calibration/calibration.json.
 PREDICT_GROUPS ?=
 PREDICT_SEEDS ?=
-PREDICT_SWEEP ?= compaction
-PREDICT_CALIBRATION ?= docs/studies/yield_radius_calibration/calibration.json
+PREDICT_SWEEP ?= compaction_flat_unfold
+PREDICT_CALIBRATION ?= docs/studies/yield_radius_calibration_flat_unfold/calibration.json
 .PHONY: predictions
 predictions:
 	$(MAKE) --no-print-directory sweep SWEEP=$(PREDICT_SWEEP) SWEEP_GROUPS="$(PREDICT_GROUPS)" SWEEP_SEEDS="$(PREDICT_SEEDS)"

@@ -369,7 +369,7 @@ def plot(doc, path, fmt_):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--sweep-results", help="results/compaction (make sweep SWEEP=compaction)")
+    ap.add_argument("--sweep-results", help="results/compaction_flat_unfold (make sweep SWEEP=compaction_flat_unfold)")
     ap.add_argument("--calibration", help="calibration.json of make calibrate-yield")
     ap.add_argument("--replot", metavar="PREDICTIONS_JSON",
                     help="only redraw the figure from a kept predictions.json (make study-figures)")

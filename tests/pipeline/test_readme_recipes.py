@@ -15,7 +15,7 @@ What differs from a reader's machine, and why:
     (a wrapper first on PATH): the test runs after the build and must not rebuild;
   - PRESET=tiny in the environment (README, "The recipes in this file"), the one size setting;
   - the compaction sweep is a stand-in of one tiny grid point and two seeds, written into the
-    copy's pipeline/sweeps/compaction.yaml (the real one takes hours);
+    copy's pipeline/sweeps/compaction_flat_unfold.yaml (the real one takes hours);
   - the resume recipe needs a stopped run: the test starts that recipe's own command and stops
     it with SIGINT, as Ctrl-C would, once its first checkpoint is written;
   - the Python reader's recipe reads make reproduce's first seed: the analysis of the run the
@@ -200,7 +200,7 @@ def reproduce_seed_for_reader(sb, recipe):
 
 
 def write_sweep_standin(sb, recipe):
-    with open(sb.path("pipeline/sweeps/compaction.yaml"), "w") as f:
+    with open(sb.path("pipeline/sweeps/compaction_flat_unfold.yaml"), "w") as f:
         f.write(SWEEP_STANDIN)
 
 
@@ -233,7 +233,7 @@ def check_compare(sb, out):
 HOOKS = {  # name: (before, check after)
     "run": (None, check_run),
     "resume": (stop_run_at_checkpoint, check_resume),
-    "sweep": (write_sweep_standin, exists("results/compaction/REPORT.md", "docs/studies/compaction")),
+    "sweep": (write_sweep_standin, exists("results/compaction_flat_unfold/REPORT.md", "docs/studies/compaction_flat_unfold")),
     "python-reader": (reproduce_seed_for_reader, exists("P.png")),
     "compare": (None, check_compare),
     "protocol": (None, exists("protocols/mine.yaml", "runs/mine.h5")),

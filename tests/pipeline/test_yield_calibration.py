@@ -6,7 +6,8 @@ the kept calibration:
 - a target above or below every angle's P: exit 3, saying which way to extend the grid, or that
   P peaks or dips inside it where the seeds show the turn (not where it is within their noise);
 - groups crumpled to different compactions: exit 2;
-- protocols/axial_crumpling.yaml states the angle docs/studies/yield_calibration/ found;
+- protocols/axial_crumpling.yaml states the yield radius that `make calibrate-yield`'s kept
+  calibration found, with the same unfold;
 - pipeline/calibration/predictions.py: a simulation 10 % above the law in every cycle, with
   c1, c2, a and the KS test within their goals, reaches every goal; 50 % above misses the P goal
   and a collapse far from the law misses c1 and c2; the growth's shape at each threshold of the
@@ -206,12 +207,16 @@ class YieldCalibration(unittest.TestCase):
         self.assertIn("different or unknown compactions", err)
 
     def test_the_protocol_states_the_kept_calibration(self):
-        # The protocol states the yield one way; the kept calibration of that statement must
-        # have found the protocol's value.
-        kept_dir = {"yield_angle": "yield_calibration", "yield_radius": "yield_radius_calibration"}
+        # The protocol states the yield one way; the kept calibration of that statement, the one
+        # `make calibrate-yield` makes (CALIBRATE_SWEEP's default, or the yield-angle one), must
+        # have found the protocol's value, with the protocol's unfold.
+        with open(os.path.join(REPO, "pipeline", "calibration", "calibrate.mk")) as f:
+            default_sweep = re.search(r"^CALIBRATE_SWEEP \?= (\S+)$", f.read(), re.M).group(1)
+        kept_dir = {"yield_angle": "yield_calibration", "yield_radius": default_sweep}
         with open(os.path.join(REPO, "protocols", "axial_crumpling.yaml")) as f:
-            stated = dict(re.findall(r"^\s+(yield_angle|yield_radius):\s*([0-9.eE+-]+)\s*(?:#.*)?$",
-                                     f.read(), re.M))
+            protocol = f.read()
+        stated = dict(re.findall(r"^\s+(yield_angle|yield_radius):\s*([0-9.eE+-]+)\s*(?:#.*)?$",
+                                 protocol, re.M))
         self.assertEqual(len(stated), 1, f"protocols/axial_crumpling.yaml states {stated}: "
                          "exactly one of material.yield_angle and material.yield_radius")
         name, value = stated.popitem()
@@ -222,6 +227,16 @@ class YieldCalibration(unittest.TestCase):
                                msg=f"the protocol's {name} is not the kept calibration's "
                                f"(docs/studies/{kept_dir[name]}/; make calibrate-yield)")
         self.assertAlmostEqual(kept["target_P_L0"], TARGET, places=6)
+        if name == "yield_radius":
+            # The calibration's sweep ran the protocol's unfold (its flatten_length, pinned there).
+            unfold = re.search(r"- type: unfold\n((?:\s{6,}\S.*\n)*)", protocol).group(1)
+            proto_flat = re.search(r"flatten_length:\s*([0-9.eE+-]+)", unfold)
+            with open(os.path.join(REPO, "pipeline", "sweeps", default_sweep + ".yaml")) as f:
+                swept = re.search(r"^\s+protocol\.stages\.unfold\.flatten_length:\s*([0-9.eE+-]+)",
+                                  f.read(), re.M)
+            self.assertEqual(float(proto_flat.group(1)) if proto_flat else None,
+                             float(swept.group(1)) if swept else None,
+                             f"the protocol's unfold is not that of pipeline/sweeps/{default_sweep}.yaml")
 
 
 def law(n):
