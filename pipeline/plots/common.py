@@ -2,7 +2,8 @@
 message, the ensemble file of `crumple-analyze ensemble`, the figure output (-o FILE and
 --format png|svg, saved alike by every plot script), the experimental constants from data/ and
 the law they give, the fragmentation-model density phi(xi; a) of docs/STATISTICS.md §3.3, and
-the error of a ratio of means over paired runs."""
+for runs paired by seed: each run's values by seed, a mean with its s.e.m., and the error of a
+ratio of means."""
 import csv
 import json
 import math
@@ -37,6 +38,23 @@ def load_ensemble(path):
         die(f"{path} is not an ensemble file of `crumple-analyze ensemble` (no {', '.join(missing)}); "
             "make it with: crumple-analyze ensemble -o ENSEMBLE.json RUN.analysis ...")
     return e
+
+
+def per_seed(ens, key):
+    """{seed: {cycle: value}} of one statistic over an ensemble's runs (cycles without it left
+    out): what two ensembles of the same seeds are paired by."""
+    out = {}
+    for r in ens.get("runs") or []:
+        out[r["seed"]] = {c["cycle"]: c[key] for c in r.get("cycles", []) if c.get(key) is not None}
+    return out
+
+
+def mean_sem(xs):
+    """Mean and s.e.m. (n - 1) of a list; (None, None) when empty, no s.e.m. from one value."""
+    if not xs:
+        return None, None
+    m = statistics.fmean(xs)
+    return m, (statistics.stdev(xs) / math.sqrt(len(xs)) if len(xs) > 1 else None)
 
 
 FIG_FORMATS = ("png", "svg")

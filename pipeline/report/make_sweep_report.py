@@ -144,10 +144,11 @@ def paired_section(add, steps):
             f"{', '.join(str(s) for s in step['seeds'])}):\n")
         add("| cycle | " + " | ".join(labels.values()) + " |")
         add("| --- | " + " | ".join("---" for _ in labels) + " |")
+        by = {(r["quantity"], r["cycle"]): r for r in step["rows"]}
         for n in sorted({r["cycle"] for r in step["rows"]}):
             cells = []
             for q in labels:
-                r = next((x for x in step["rows"] if x["quantity"] == q and x["cycle"] == n), None)
+                r = by.get((q, n))
                 if r is None or r["mean"] is None:
                     cells.append("–")
                     continue

@@ -23,31 +23,14 @@ usage: compare_groups.py --baseline A/ensemble.json --variant B/ensemble.json
 """
 import argparse
 import json
-import math
 import os
 import statistics
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
-from common import die, experiment, load_ensemble, ratio_of_means  # noqa: E402
+from common import die, experiment, load_ensemble, mean_sem, per_seed, ratio_of_means  # noqa: E402
 
 RESOLVED_SEM = 2.0
-
-
-def per_seed_P(ens):
-    """{seed: {cycle: P}} of an ensemble's runs."""
-    out = {}
-    for r in ens.get("runs") or []:
-        out[r["seed"]] = {c["cycle"]: c["perimeter_P"] for c in r.get("cycles", [])
-                          if c.get("perimeter_P") is not None}
-    return out
-
-
-def mean_sem(xs):
-    if not xs:
-        return None, None
-    m = statistics.fmean(xs)
-    return m, (statistics.stdev(xs) / math.sqrt(len(xs)) if len(xs) > 1 else None)
 
 
 def resolved(d, s):
@@ -58,7 +41,7 @@ def compare(base, var):
     if base.get("compaction") != var.get("compaction"):
         die(f"the groups were crumpled to different compactions ({base.get('compaction')} and "
             f"{var.get('compaction')}): not a comparison of one change")
-    pb, pv = per_seed_P(base), per_seed_P(var)
+    pb, pv = per_seed(base, "perimeter_P"), per_seed(var, "perimeter_P")
     seeds = sorted(set(pb) & set(pv))
     if not seeds:
         die("the two ensembles share no seed: a paired comparison needs the same seeds")

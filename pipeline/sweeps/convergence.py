@@ -52,7 +52,7 @@ import zlib
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
-from common import die, load_ensemble, load_json, sweep_groups  # noqa: E402
+from common import die, load_ensemble, load_json, mean_sem, per_seed, sweep_groups  # noqa: E402
 
 # (ensemble key, label, unit): the statistics the issue asks for, in the report's order.
 QUANTITIES = [("perimeter_P", "P (facet perimeters)", "L0"),
@@ -271,40 +271,24 @@ def table(points, results):
     return rungs, rows
 
 
-def paired_steps(points, rungs):
+def paired_steps(rungs):
     """Between each pair of neighbouring rungs (coarse to fine), per statistic and cycle, each
-    common seed's ratio fine / coarse from the runs' stats.json, with the mean and s.e.m. over
-    those seeds. A seed whose coarse value is zero or either value missing is left out of that
-    row (its "seeds" say which entered); one seed gives a mean without an s.e.m."""
-    analyses = {}
-    for p in points["points"]:
-        analyses.setdefault(p["group"], {})[p["seed"]] = p["analysis"]
-    cache = {}
-
-    def cycles(group, seed):
-        if (group, seed) not in cache:
-            path = os.path.join(analyses[group][seed], "stats.json")
-            cache[(group, seed)] = {c["cycle"]: c for c in
-                                    load_json(path, "stats.json").get("cycles", [])}
-        return cache[(group, seed)]
-
+    common seed's ratio fine / coarse from the runs the rungs' ensembles hold, with the mean and
+    s.e.m. over those seeds. A seed whose coarse value is zero or either value missing is left
+    out of that row (its "seeds" say which entered); one seed gives a mean without an s.e.m."""
     steps = []
     for lo, hi in zip(rungs, rungs[1:]):
-        seeds = sorted(set(analyses.get(lo["group"], {})) & set(analyses.get(hi["group"], {})))
-        numbers = sorted(set.intersection(*[set(cycles(g, s)) for s in seeds
-                                             for g in (lo["group"], hi["group"])])) if seeds else []
         rows = []
+        seeds = sorted({r["seed"] for r in lo["ensemble"]["runs"]}
+                       & {r["seed"] for r in hi["ensemble"]["runs"]})
         for key, label, unit in QUANTITIES:
-            for n in numbers:
-                used, ratios = [], []
-                for s in seeds:
-                    a, b = cycles(lo["group"], s)[n].get(key), cycles(hi["group"], s)[n].get(key)
-                    if has_mean(a) and has_mean(b) and a != 0:
-                        used.append(s)
-                        ratios.append(b / a)
-                k = len(ratios)
-                mean = float(np.mean(ratios)) if k else None
-                sem = float(np.std(ratios, ddof=1) / math.sqrt(k)) if k >= 2 else None
+            a, b = per_seed(lo["ensemble"], key), per_seed(hi["ensemble"], key)
+            common = [a.get(s, {}).keys() & b.get(s, {}).keys() for s in seeds]
+            for n in sorted(set.intersection(*map(set, common)) if common else ()):
+                used = [s for s in seeds if has_mean(a[s].get(n)) and has_mean(b[s].get(n))
+                        and a[s][n] != 0]
+                ratios = [b[s][n] / a[s][n] for s in used]
+                mean, sem = mean_sem(ratios)
                 rows.append({"quantity": key, "label": label, "cycle": n, "seeds": used,
                              "ratios": ratios, "mean": mean, "sem": sem})
         steps.append({"coarse": lo["nodes"], "fine": hi["nodes"], "seeds": seeds, "rows": rows})
@@ -470,7 +454,7 @@ def main():
     doc = document(points["name"],
                    [{k: r[k] for k in ("group", "nodes", "h_m")}
                     | {"runs": r["ensemble"]["n_runs"], "seeds": r["ensemble"]["seeds"]}
-                    for r in rungs], rows, paired_steps(points, rungs))
+                    for r in rungs], rows, paired_steps(rungs))
     outs = write(a.results, doc)
     print(f"convergence.py: {len(rungs)} rungs ({', '.join(str(r['nodes']) for r in rungs)} "
           f"nodes), {len(rows)} rows -> {', '.join(outs)}")

@@ -410,6 +410,9 @@ class Convergence(unittest.TestCase):
                     5: (11.0, 22.0)}
             fine = {1: (8.8, 15.0), 2: (11.2, 20.4), 3: (12.96, 24.5), 5: (12.1, 22.0)}
             for nodes, vals in ((3000, base), (6000, fine)):
+                ens_path = os.path.join(tmp, "groups", f"nodes-{nodes}", "ensemble.json")
+                with open(ens_path) as f:
+                    ens = json.load(f)
                 for s, (p1, p2) in vals.items():
                     an = os.path.join(tmp, "runs", f"nodes-{nodes}", f"seed{s}.analysis")
                     os.makedirs(an, exist_ok=True)
@@ -421,6 +424,10 @@ class Convergence(unittest.TestCase):
                         json.dump({"sheet": {"nodes": nodes, "triangles": 2 * nodes,
                                              "area_m2": AREA}, "cycles": cyc}, f)
                     pts["points"].append({"group": f"nodes-{nodes}", "seed": s, "analysis": an})
+                    # crumple-analyze ensemble keeps each run's cycles beside its seed.
+                    ens["runs"].append({"seed": s, "cycles": cyc})
+                with open(ens_path, "w") as f:
+                    json.dump(ens, f)
             with open(os.path.join(tmp, "points.json"), "w") as f:
                 json.dump(pts, f)
             doc = run(tmp)
