@@ -116,9 +116,16 @@ void add_run_options(CLI::App& app, AnalyzeOptions& opt, double& absolute, doubl
                  "regions below this many pixels are specks, not facets")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--close-px", opt.segment.close_px,
-                 "closing kernel (pixels) that bridges small gaps in creases; <= 1 disables")
+  auto* close_px = app.add_option("--close-px", opt.segment.close_px,
+                                  "closing kernel (pixels) that bridges small gaps in creases; <= 1 "
+                                  "disables")
       ->capture_default_str();
+  app.add_option("--close-mm", opt.close_mm,
+                 "closing kernel in millimetres of the flat sheet instead: crease lines closer "
+                 "than this merge and the facets between them vanish, at one physical scale on "
+                 "every mesh (docs/studies/convergence_flat_unfold_closed/)")
+      ->check(CLI::PositiveNumber)
+      ->excludes(close_px);
   app.add_option("--watershed-h-px", opt.segment.watershed_h_px,
                  "also cut facets at their necks, as the experiments' segmentation does: a marker "
                  "watershed of the distance to the nearest crease, seeded at the domes higher "

@@ -22,7 +22,8 @@
 namespace crumple::analysis {
 
 struct SegmentParams {
-  int close_px = 3;      ///< closing kernel size in pixels; <= 1 disables the closing
+  /// Closing kernel size in pixels (an even size is taken one up); <= 1 disables the closing.
+  int close_px = 3;
   int min_facet_px = 5;  ///< regions below this many pixels (before growth) are specks
   /// Depth in pixels of the distance-map domes that seed the neck cuts (the h of the
   /// experiments' h-maxima markers, docs/STATISTICS.md §1); 0 = no cuts, facets are the plain

@@ -186,6 +186,8 @@ AnalyzeOptions raster_for_mesh(const RunData& run, const AnalyzeOptions& opt) {
         std::sqrt(4.0 * mean_triangle_area(run.mesh) / std::sqrt(3.0)) * run.length_unit_m;
     o.px_per_cm = opt.px_per_edge / (100.0 * edge_m);
   }
+  if (opt.close_mm > 0)
+    o.segment.close_px = static_cast<int>(std::lround(opt.close_mm * 0.1 * o.px_per_cm));
   return o;
 }
 
@@ -214,6 +216,7 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt_given) {
   ctx.segment = opt.segment;
   ctx.crease_px = opt.crease_px;
   out.px_per_m = opt.px_per_cm * 100.0;
+  out.close_px = opt.segment.close_px;
   out.image_width = ctx.frame.width;
   out.image_height = ctx.frame.height;
   out.mean_triangle_area_m2 = mean_triangle_area(mesh) * unit * unit;
@@ -224,7 +227,10 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt_given) {
   // A triangle's side should span several pixels, or a one-triangle facet vanishes under the
   // crease lines and the closing and the raster, not the mesh, sets the floor.
   const double edge_px = std::sqrt(4.0 * out.mean_triangle_area_m2 / std::sqrt(3.0)) * out.px_per_m;
-  if (edge_px < 4.0 * opt.crease_px + opt.segment.close_px)
+  // A closing asked for in millimetres is meant to merge what lies closer than that, so only
+  // the raster's own closing counts here.
+  const int raster_close_px = opt.close_mm > 0 ? 0 : opt.segment.close_px;
+  if (edge_px < 4.0 * opt.crease_px + raster_close_px)
     out.warnings.push_back("mean mesh edge is only " + std::to_string(edge_px) +
                            " px: raise --px-per-cm so the smallest facets are resolved");
 

@@ -40,6 +40,10 @@ struct AnalyzeOptions {
   /// rung at the same resolution relative to its triangles (docs/studies/convergence_radius/).
   double px_per_edge = 0.0;
   SegmentParams segment;                          ///< closing size, minimum facet pixels
+  /// When > 0 (--close-mm), the closing kernel is this many millimetres of the flat sheet
+  /// instead of segment.close_px pixels: crease lines closer than that merge into one and the
+  /// facets between them vanish, at the same physical scale on every mesh and raster.
+  double close_mm = 0.0;
   int crease_px = 1;                              ///< crease line width in pixels
   int bootstrap = 200;                            ///< resamples for the a interval and KS p-value
   /// The resolution floor of the truncated facet law (fits/truncated_shape.hpp), in mean mesh
@@ -110,6 +114,7 @@ struct CycleResult {
 
 struct RunAnalysis {
   double L0_m = 0, area_m2 = 0, px_per_m = 0;
+  int close_px = 0;  ///< the closing kernel used, in pixels (from --close-mm when given)
   int image_width = 0, image_height = 0;
   double mean_triangle_area_m2 = 0;  ///< the mesh floor: creases cannot enclose less
   double pixel_floor_m2 = 0;         ///< min_facet_px pixels
@@ -132,7 +137,8 @@ struct RunAnalysis {
 
 /// Throws InputError (io/run_reader.hpp) when no threshold can be derived (c0 = 0 without
 /// --threshold).
-/// `opt` with px_per_cm resolved for this run's mesh when px_per_edge asks for it.
+/// `opt` with px_per_cm resolved for this run's mesh when px_per_edge asks for it, and the
+/// closing kernel in pixels when close_mm asks for it.
 AnalyzeOptions raster_for_mesh(const RunData& run, const AnalyzeOptions& opt);
 
 RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt);

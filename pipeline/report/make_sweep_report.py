@@ -207,6 +207,11 @@ def main():
         add(f"{pts['description']}.\n")
     add(f"- sweep file: `{pts['file']}`; protocol `{pts['protocol']}`; preset `{pts['preset']}` "
         f"({' '.join(pts['preset_sets']) or 'no settings'})")
+    if pts.get("runs_of"):
+        add(f"- **the runs of the sweep `{pts['runs_of']}`** (made by its rules, the same files), "
+            "analysed again here")
+    if pts.get("analyze"):
+        add(f"- analysed with `crumple-analyze {' '.join(pts['analyze'])}`")
     if pts["set"]:
         add("- fixed on top of the preset: " +
             ", ".join(f"`{s['key']} = {s['value']}`" for s in pts["set"]))
@@ -353,8 +358,10 @@ def main():
            else "")
         + ("; `convergence.json` and `convergence.csv`: the ladder's table"
            if pts.get("convergence") else ""))
-    add("- the runs and their analyses: `" + os.path.dirname(pts["points"][0]["run"]).rsplit("/", 1)[0]
-        + "/GROUP/seedS.h5` and `.analysis/`")
+    runs_dir = os.path.dirname(pts["points"][0]["run"]).rsplit("/", 1)[0]
+    analyses_dir = os.path.dirname(pts["points"][0]["analysis"]).rsplit("/", 1)[0]
+    add(f"- the runs and their analyses: `{runs_dir}/GROUP/seedS.h5` and "
+        + ("`.analysis/`" if runs_dir == analyses_dir else f"`{analyses_dir}/GROUP/seedS.analysis/`"))
     os.makedirs(os.path.dirname(a.output) or ".", exist_ok=True)
     tmp = a.output + ".new"
     with open(tmp, "w") as f:

@@ -16,6 +16,10 @@ Writes into OUT_DIR (runs/sweeps/NAME):
 With --sim, each group's configuration is first checked with `crumple-sim --print-config`, so a
 mistyped key fails here, naming the sweep file's line, rather than in every run.
 
+A sweep with `runs_of: OTHER` makes no runs of its own: its points are the runs of the sweep
+OTHER.yaml beside it (in OTHER's run folder, made by the same rules), analysed again with its own
+`analyze` options into its own folder, so an analysis choice is studied on runs already made.
+
 Exit codes: 0 done, 2 bad sweep file (nothing written).
 """
 import argparse
@@ -30,7 +34,9 @@ import sys
 import yaml
 
 KEYS = {"description", "preset", "protocol", "set", "grid", "seeds", "threads", "collapse",
-        "convergence", "history", "analyze"}
+        "convergence", "history", "analyze", "runs_of"}
+# What a sweep of another's runs may state itself; the rest is the other sweep's.
+RUNS_OF_KEYS = {"description", "runs_of", "analyze"}
 REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
 
@@ -106,6 +112,8 @@ def load(path):
     for k, (kn, _) in top.items():
         if k not in KEYS:
             fail(path, kn, k, f"unknown key (known: {', '.join(sorted(KEYS))})")
+    if "runs_of" in top:
+        return load_runs_of(path, top)
     for k in ("protocol", "preset", "grid"):
         if k not in top:
             raise SweepError(f"{path}: {k}: missing")
@@ -186,6 +194,7 @@ def load(path):
         if v == "true" and [g["key"] for g in grid] != ["mesh.nodes"]:
             fail(path, vn, "convergence", "a convergence ladder varies mesh.nodes alone in its grid")
         sweep["convergence"] = v == "true"
+    sweep["runs_of"] = None
     sweep["history"] = None
     if "history" in top:
         hn = top["history"][1]
@@ -197,34 +206,67 @@ def load(path):
         if sweep["history"] is None or not 0 < sweep["history"] < 1:
             fail(path, hn, "history", f"{h!r}: the test compaction, a number in (0, 1)")
     # Extra crumple-analyze arguments for every run (e.g. the ladder's --px-per-edge).
-    sweep["analyze"] = []
+    sweep["analyze"] = analyze_options(path, top) if "analyze" in top else []
+    return sweep
+
+
+def analyze_options(path, top):
+    an = top["analyze"][1]
+    text = scalar_text(path, an, "analyze")
+    try:
+        options = shlex.split(text)
+    except ValueError as e:
+        fail(path, an, "analyze", f"{text!r}: not a list of arguments ({e})")
+    if any(a in ("-o", "--output") or not a.startswith("-") and not re.fullmatch(r"[-+.0-9eE]+", a)
+           for a in options):
+        fail(path, an, "analyze", f"{text!r}: crumple-analyze options only (no output or "
+             "input paths)")
+    return options
+
+
+def load_runs_of(path, top):
+    """A sweep of another sweep's runs: that sweep's points, this sweep's name and analysis."""
+    for k, (kn, _) in top.items():
+        if k not in RUNS_OF_KEYS:
+            fail(path, kn, k, "comes from the sweep named by runs_of (a sweep of another's runs "
+                 f"states only {', '.join(sorted(RUNS_OF_KEYS))})")
+    rn = top["runs_of"][1]
+    other = scalar_text(path, rn, "runs_of")
+    other_path = os.path.join(os.path.dirname(path), other + ".yaml")
+    if not re.fullmatch(r"[A-Za-z0-9_.-]+", other) or not os.path.isfile(other_path):
+        fail(path, rn, "runs_of", f"no sweep {other!r} beside this file ({other_path})")
+    if other == os.path.splitext(os.path.basename(path))[0]:
+        fail(path, rn, "runs_of", "names this sweep itself")
+    sweep = load(other_path)
+    if sweep["runs_of"]:
+        fail(path, rn, "runs_of", f"{other} is itself a sweep of {sweep['runs_of']}'s runs: name "
+             "that one")
+    sweep["runs_of"] = other
+    sweep["file"] = path
+    sweep["name"] = os.path.splitext(os.path.basename(path))[0]
+    if "description" in top:
+        sweep["description"] = top["description"][1].value
     if "analyze" in top:
-        an = top["analyze"][1]
-        text = scalar_text(path, an, "analyze")
-        try:
-            sweep["analyze"] = shlex.split(text)
-        except ValueError as e:
-            fail(path, an, "analyze", f"{text!r}: not a list of arguments ({e})")
-        if any(a in ("-o", "--output") or not a.startswith("-") and not re.fullmatch(r"[-+.0-9eE]+", a)
-               for a in sweep["analyze"]):
-            fail(path, an, "analyze", f"{text!r}: crumple-analyze options only (no output or "
-                 "input paths)")
+        sweep["analyze"] = analyze_options(path, top)
     return sweep
 
 
 def points(sweep, out_dir):
-    """Every point of the grid and seeds, in order: grid values vary slowest, seeds fastest."""
+    """Every point of the grid and seeds, in order: grid values vary slowest, seeds fastest.
+    The runs of a sweep of another's runs are in the other's folder beside OUT_DIR."""
     keys = [g["key"] for g in sweep["grid"]]
+    runs_dir = os.path.join(os.path.dirname(os.path.normpath(out_dir)), sweep["runs_of"]) \
+        if sweep["runs_of"] else out_dir
     base = [a for k, v in sweep["set"] for a in ("--set", f"{k}={v}")]
     out = []
     for combo in itertools.product(*(g["values"] for g in sweep["grid"])):
         group = "_".join(f"{k.split('.')[-1]}-{value_name(v)}" for k, v in zip(keys, combo))
         own = [a for k, v in zip(keys, combo) for a in ("--set", f"{k}={v}")]
         for seed in sweep["seeds"]:
-            run = os.path.join(out_dir, group, f"seed{seed}.h5")
+            run = os.path.join(runs_dir, group, f"seed{seed}.h5")
             out.append({"name": f"{group}/seed{seed}", "group": group, "seed": int(seed),
                         "values": dict(zip(keys, combo)), "run": run,
-                        "analysis": run[:-3] + ".analysis",
+                        "analysis": os.path.join(out_dir, group, f"seed{seed}.analysis"),
                         "analyze_args": list(sweep["analyze"]),
                         "args": [sweep["protocol"], "--seed", seed, "--threads",
                                  str(sweep["threads"])] + sweep["preset_sets"] + base + own})
@@ -331,13 +373,15 @@ def main():
     os.makedirs(a.out_dir, exist_ok=True)
     for p in pts:
         os.makedirs(os.path.dirname(p["run"]), exist_ok=True)
+        os.makedirs(os.path.dirname(p["analysis"]), exist_ok=True)
+        # For a sweep of another's runs this is the other's argument file, written the same.
         write_if_changed(p["run"] + ".args", " ".join(shlex.quote(x) for x in p["args"]) + "\n")
         # A changed analysis argument redoes the analysis, not the run.
         write_if_changed(p["analysis"] + ".args",
                          " ".join(shlex.quote(x) for x in p["analyze_args"]) + "\n")
     doc = {k: sweep[k] for k in ("name", "file", "description", "preset", "protocol", "seeds",
                                  "sweep_seeds", "sweep_groups", "threads", "collapse", "convergence",
-                                 "history", "analyze")}
+                                 "history", "analyze", "runs_of")}
     doc["set"] = [{"key": k, "value": v} for k, v in sweep["set"]]
     doc["grid"] = [{"key": g["key"], "values": g["values"]} for g in sweep["grid"]]
     doc["preset_sets"] = sweep["preset_sets"]

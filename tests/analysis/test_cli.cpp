@@ -288,6 +288,44 @@ TEST(CrumpleAnalyze, RasterFollowsTheMeshWithPxPerEdge) {
   fs::remove_all(dir);
 }
 
+// --close-mm sets the closing kernel in millimetres of the flat sheet: its pixel width follows
+// the raster and is recorded beside the millimetres; two crease lines closer than it merge
+// into one and the strip between them is no facet; with --close-px it is refused.
+TEST(CrumpleAnalyze, ClosingInMillimetresMergesCloseCreases) {
+  const fs::path dir = scratch("close_mm");
+  const MeshData m = synth::square_grid_mesh(8, 0.1);  // grid lines 12.5 mm apart
+  std::vector<double> p(m.hinges.size(), 0.0);
+  // Two full-length lines x = 50 and 62.5 mm and one line y = 50 mm: six facets.
+  for (double x : {0.05, 0.0625})
+    for (auto h : synth::hinges_on_line(m, 0, x)) p[h] = 0.5;
+  for (auto h : synth::hinges_on_line(m, 1, 0.05)) p[h] = 0.5;
+  synth::write_run((dir / "good.h5").string(), m, {p});
+  const std::string run = (dir / "good.h5").string();
+  EXPECT_EQ(run_analyze(run + " -o " + (dir / "both").string() + " --close-mm 1 --close-px 3"), 2);
+  EXPECT_FALSE(fs::exists(dir / "both"));
+  auto stats = [&](const std::string& name, const std::string& args) {
+    const fs::path out = dir / name;
+    EXPECT_EQ(run_analyze(run + " -o " + out.string() + " --threshold 0.1 --px-per-cm 40 " + args),
+              0) << args;
+    std::ifstream in(out / "stats.json");
+    return nlohmann::json::parse(in);
+  };
+  const auto facets = [](const nlohmann::json& j) { return j["cycles"][0]["n_facets"].get<int>(); };
+  const auto by_px = stats("by_px", "--close-px 3");
+  EXPECT_TRUE(by_px["parameters"]["close_mm"].is_null());
+  EXPECT_EQ(by_px["parameters"]["close_px"].get<int>(), 3);
+  EXPECT_EQ(facets(by_px), 6);
+  const auto narrow = stats("narrow", "--close-mm 1");
+  EXPECT_EQ(narrow["parameters"]["close_px"].get<int>(), 4);  // 1 mm at 40 px/cm
+  EXPECT_DOUBLE_EQ(narrow["parameters"]["close_mm"].get<double>(), 1.0);
+  EXPECT_EQ(facets(narrow), 6);
+  const auto wide = stats("wide", "--close-mm 15");
+  EXPECT_EQ(wide["parameters"]["close_px"].get<int>(), 60);
+  EXPECT_EQ(facets(wide), 4);
+  if (::testing::Test::HasFailure()) return;
+  fs::remove_all(dir);
+}
+
 TEST(CrumpleAnalyze, BadInputExitsTwoAndWritesNothing) {
   const fs::path dir = scratch("bad");
   const MeshData m = synth::square_grid_mesh(4, 0.1);

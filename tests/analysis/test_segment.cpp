@@ -150,3 +150,26 @@ TEST(Segment, RoundSheetKeepsOutsideUnlabelled) {
   EXPECT_EQ(cv::countNonZero(seg.labels != 0), cv::countNonZero(sheet));
   EXPECT_TRUE(seg.facets[0].touches_border && seg.facets[1].touches_border);
 }
+
+// The closing keeps every crease line where it is whatever its kernel size: a one-pixel line
+// from one edge of the sheet to the other still separates two facets at even and odd sizes
+// (OpenCV does not reflect the kernel, so an even, off-centre kernel moves the line by a pixel
+// and opens a gap at the sheet's edge), and two lines closer than the kernel merge into one.
+TEST(Segment, ClosingKeepsThinLinesAtEvenAndOddSizes) {
+  cv::Mat sheet = cv::Mat::zeros(220, 220, CV_8U);
+  cv::rectangle(sheet, cv::Rect(10, 10, 200, 200), cv::Scalar(255), cv::FILLED);
+  cv::Mat creases = cv::Mat::zeros(220, 220, CV_8U);
+  cv::line(creases, {100, 10}, {100, 209}, cv::Scalar(255), 1);
+  cv::line(creases, {10, 60}, {209, 60}, cv::Scalar(255), 1);
+  for (int size : {2, 3, 4, 5, 12, 24, 25}) {
+    SegmentParams p;
+    p.close_px = size;
+    EXPECT_EQ(segment_facets(sheet, creases, p).facets.size(), 4u) << "close_px " << size;
+  }
+  cv::line(creases, {110, 10}, {110, 209}, cv::Scalar(255), 1);
+  SegmentParams narrow, wide;
+  narrow.close_px = 4;
+  wide.close_px = 24;
+  EXPECT_EQ(segment_facets(sheet, creases, narrow).facets.size(), 6u);
+  EXPECT_EQ(segment_facets(sheet, creases, wide).facets.size(), 4u);
+}

@@ -202,6 +202,58 @@ class Expand(unittest.TestCase):
                 self.assertIn("s.yaml:10: analyze: ", r.stderr)
                 self.assertFalse(os.path.exists(out))
 
+    def test_a_sweep_of_another_sweeps_runs_analyses_them_again(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            with open(os.path.join(tmp, "base.yaml"), "w") as f:
+                f.write(GOOD + "analyze: --px-per-edge 24\n")
+            again = ("description: again\nruns_of: base\n"
+                     "analyze: --px-per-edge 24 --close-mm 1.3\n")
+            r, _, out = expand(again, tmp, sim=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            doc = json.loads(read(os.path.join(out, "points.json")))
+            self.assertEqual(doc["runs_of"], "base")
+            self.assertEqual(doc["description"], "again")
+            self.assertEqual(doc["name"], "s")
+            self.assertEqual(len(doc["points"]), 8)  # the base's grid and seeds
+            base_runs = os.path.join(tmp, "base")  # the base's folder beside OUT_DIR
+            mk = read(os.path.join(out, "points.mk"))
+            for p in doc["points"]:
+                # The base's run file and arguments, this sweep's analysis and options.
+                self.assertEqual(p["run"], os.path.join(base_runs, p["group"], f"seed{p['seed']}.h5"))
+                self.assertEqual(p["analysis"], os.path.join(out, p["group"],
+                                                             f"seed{p['seed']}.analysis"))
+                self.assertIn("protocol.cycles=3", p["args"])
+                self.assertIn(f"$(ANALYZE) $< -o {p['analysis']} --px-per-edge 24 --close-mm 1.3 >",
+                              mk)
+                self.assertEqual(read(p["analysis"] + ".args"), "--px-per-edge 24 --close-mm 1.3\n")
+            # The base expanded into its own folder names the same run files with the same
+            # arguments, so a run made by either is the other's.
+            r2 = subprocess.run([sys.executable, EXPAND, os.path.join(tmp, "base.yaml"), "--out-dir",
+                                 base_runs, "--results", os.path.join(tmp, "res_base")],
+                                cwd=REPO, capture_output=True, text=True)
+            self.assertEqual(r2.returncode, 0, r2.stderr)
+            base = json.loads(read(os.path.join(base_runs, "points.json")))["points"]
+            self.assertEqual([(p["run"], p["args"]) for p in base],
+                             [(p["run"], p["args"]) for p in doc["points"]])
+            self.assertNotIn(out, " ".join(p["analysis"] for p in base))
+        # What the other sweep states cannot be stated again, and the other must exist and make
+        # its own runs; nothing is written.
+        cases = [("runs_of: base\ngrid:\n  mesh.nodes: [300]\n", "s.yaml:2: grid: comes from "
+                  "the sweep named by runs_of"),
+                 ("runs_of: nothere\n", "s.yaml:1: runs_of: no sweep 'nothere'"),
+                 ("runs_of: middle\n", "s.yaml:1: runs_of: middle is itself a sweep of base's runs"),
+                 ("runs_of: s\n", "s.yaml:1: runs_of: names this sweep itself")]
+        for text, expect in cases:
+            with self.subTest(expect=expect), tempfile.TemporaryDirectory() as tmp:
+                with open(os.path.join(tmp, "base.yaml"), "w") as f:
+                    f.write(GOOD)
+                with open(os.path.join(tmp, "middle.yaml"), "w") as f:
+                    f.write("runs_of: base\n")
+                r, _, out = expand(text, tmp)
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertIn(expect, r.stderr)
+                self.assertFalse(os.path.exists(out), "nothing is written")
+
     def test_bad_sweep_files_name_line_and_key(self):
         cases = [
             (GOOD.replace("seeds:", "seedz:"), "s.yaml:9: seedz: unknown key"),
