@@ -81,6 +81,48 @@ class Expand(unittest.TestCase):
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertNotEqual(os.stat(args).st_mtime, 1)
 
+    def test_runs_depend_on_their_resolved_configuration_not_the_protocol_file(self):
+        import h5py
+        with tempfile.TemporaryDirectory() as tmp:
+            # Two finished runs from before the configuration files: one stored the configuration
+            # the sweep resolves now (with the hinge yield it derived, which --print-config leaves
+            # out), the other a different one.
+            pts = json.loads(read(os.path.join(expand(GOOD, tmp)[2], "points.json")))["points"]
+            good, stale = pts[0]["run"], pts[1]["run"]
+            r = subprocess.run([SIM, "--print-config"] + pts[0]["args"], cwd=REPO,
+                               capture_output=True, text=True, check=True)
+            stored = r.stdout.replace("  plasticity: true\n", "  plasticity: true\n  plastic_c0: 0.5\n")
+            for run, text in ((good, stored), (stale, stored.replace("nodes: 200", "nodes: 250"))):
+                with h5py.File(run, "w") as f:
+                    f["config"] = text
+                os.utime(run, ns=(1000123456789, 1000123456789))  # make compares to the ns
+            r, _, out = expand(GOOD, tmp, sim=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            mk = read(os.path.join(out, "points.mk"))
+            for p in pts:
+                self.assertIn(f"{p['run']}: {p['run']}.args {p['run']}.config | $(SIM)", mk)
+                printed = subprocess.run([SIM, "--print-config"] + p["args"], cwd=REPO,
+                                         capture_output=True, text=True).stdout
+                self.assertEqual(read(p["run"] + ".config"), printed)
+            self.assertNotIn("protocols/axial_crumpling.yaml |", mk)
+            self.assertEqual(os.stat(good + ".config").st_mtime_ns, 1000123456789)  # the run stands
+            self.assertGreater(os.stat(stale + ".config").st_mtime, 1001)  # the run is redone
+            # Rewritten only when the configuration changes.
+            cfg = pts[2]["run"] + ".config"
+            os.utime(cfg, (5, 5))
+            self.assertEqual(expand(GOOD, tmp, sim=True)[0].returncode, 0)
+            self.assertEqual(os.stat(cfg).st_mtime, 5)
+            self.assertEqual(os.stat(good + ".config").st_mtime_ns, 1000123456789)
+            self.assertEqual(expand(GOOD.replace("protocol.cycles: 3", "protocol.cycles: 4"), tmp,
+                                    sim=True)[0].returncode, 0)
+            self.assertGreater(os.stat(cfg).st_mtime, 5)
+            # Without the simulator the rules fall back on the protocol file.
+            with tempfile.TemporaryDirectory() as bare:
+                r, _, out = expand(GOOD, bare)
+                self.assertIn(f"{pts[0]['run'].replace(tmp, bare)}: {pts[0]['run'].replace(tmp, bare)}"
+                              ".args protocols/axial_crumpling.yaml | $(SIM)",
+                              read(os.path.join(out, "points.mk")))
+
     def test_a_subset_of_the_seeds_runs_first_and_the_rest_reuses_it(self):
         with tempfile.TemporaryDirectory() as tmp:
             r, _, out = expand(GOOD, tmp, extra=["--seeds", "7"])
