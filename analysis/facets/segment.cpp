@@ -57,11 +57,7 @@ Segmentation segment_facets(const cv::Mat& sheet_in, const cv::Mat& creases_in,
   Segmentation seg;
   const cv::Mat sheet = sheet_in != 0;
   cv::Mat creases = creases_in != 0;
-  if (params.close_px > 1) {
-    // An odd size, so the kernel is symmetric about its anchor: OpenCV neither reflects the
-    // kernel nor moves the anchor between the dilation and the erosion, and with an even size
-    // the "closing" deletes one-pixel crease lines instead of keeping them.
-    const int size = params.close_px | 1;
+  if (const int size = closing_kernel_px(params.close_px); size > 0) {
     const cv::Mat k = cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(size, size));
     cv::morphologyEx(creases, creases, cv::MORPH_CLOSE, k);
   }

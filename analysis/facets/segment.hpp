@@ -21,6 +21,12 @@
 
 namespace crumple::analysis {
 
+/// The closing kernel's size as applied: an odd size, so the kernel is symmetric about its
+/// anchor (OpenCV neither reflects the kernel nor moves the anchor between the dilation and the
+/// erosion, and with an even size the "closing" moves one-pixel crease lines by a pixel); an even
+/// close_px is taken one up; 0 when close_px <= 1 disables the closing.
+inline int closing_kernel_px(int close_px) { return close_px > 1 ? (close_px | 1) : 0; }
+
 struct SegmentParams {
   /// Closing kernel size in pixels (an even size is taken one up); <= 1 disables the closing.
   int close_px = 3;

@@ -216,7 +216,7 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt_given) {
   ctx.segment = opt.segment;
   ctx.crease_px = opt.crease_px;
   out.px_per_m = opt.px_per_cm * 100.0;
-  out.close_px = opt.segment.close_px;
+  out.close_px = closing_kernel_px(opt.segment.close_px);
   out.image_width = ctx.frame.width;
   out.image_height = ctx.frame.height;
   out.mean_triangle_area_m2 = mean_triangle_area(mesh) * unit * unit;

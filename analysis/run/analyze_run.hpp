@@ -114,7 +114,8 @@ struct CycleResult {
 
 struct RunAnalysis {
   double L0_m = 0, area_m2 = 0, px_per_m = 0;
-  int close_px = 0;  ///< the closing kernel used, in pixels (from --close-mm when given)
+  /// The closing kernel as applied, in pixels (from --close-mm when given; odd, 0 = none).
+  int close_px = 0;
   int image_width = 0, image_height = 0;
   double mean_triangle_area_m2 = 0;  ///< the mesh floor: creases cannot enclose less
   double pixel_floor_m2 = 0;         ///< min_facet_px pixels

@@ -316,11 +316,11 @@ TEST(CrumpleAnalyze, ClosingInMillimetresMergesCloseCreases) {
   EXPECT_EQ(by_px["parameters"]["close_px"].get<int>(), 3);
   EXPECT_EQ(facets(by_px), 6);
   const auto narrow = stats("narrow", "--close-mm 1");
-  EXPECT_EQ(narrow["parameters"]["close_px"].get<int>(), 4);  // 1 mm at 40 px/cm
+  EXPECT_EQ(narrow["parameters"]["close_px"].get<int>(), 5);  // 1 mm at 40 px/cm, made odd
   EXPECT_DOUBLE_EQ(narrow["parameters"]["close_mm"].get<double>(), 1.0);
   EXPECT_EQ(facets(narrow), 6);
   const auto wide = stats("wide", "--close-mm 15");
-  EXPECT_EQ(wide["parameters"]["close_px"].get<int>(), 60);
+  EXPECT_EQ(wide["parameters"]["close_px"].get<int>(), 61);
   EXPECT_EQ(facets(wide), 4);
   if (::testing::Test::HasFailure()) return;
   fs::remove_all(dir);
