@@ -241,6 +241,8 @@ void Integrator::retry_after_rejection(const State& s, const Attempt& a, double 
     msg << "integration failed at t = " << s.t << " with h = " << h << " (h_min "
         << settings_.h_min << ", " << (implicit ? "implicit" : "explicit")
         << " mode): " << reason << "; largest residual force at node " << a.worst_node;
+    if (const std::string by_term = forces_on_node(s, a.worst_node); !by_term.empty())
+      msg << " (by term at the step's start: " << by_term << ")";
     C.wall_total += omp_get_wtime() - wall0;
     throw NumericalFailure(msg.str());
   }

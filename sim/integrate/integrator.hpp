@@ -107,6 +107,9 @@ class Integrator {
   double plastic_rate_at(const VecX& x, const VecX& p, VecX& g) const;
   /// The same from the hinge curvatures c of that state.
   double plastic_rate_from(const VecX& c, const VecX& p, VecX& g) const;
+  /// Each force term's force on `node` at s, largest first ("contact 3.1e+04 N, springs 12 N"):
+  /// the diagnostic of a run that fails, naming which physics holds the step down.
+  std::string forces_on_node(const State& s, Index node) const;
   void after_accept(const State& s, const Attempt& a, double h, int rejections);
   // The steps of advance_to, in order (integrator.cpp).
   void prepare_attempt(const State& s, bool implicit);

@@ -415,6 +415,12 @@ TEST(Integrator, NonSpdMatrixRejectsAndRetriesWithSmallerStep) {
     EXPECT_NE(msg.find("t = 0"), std::string::npos) << msg;
     // h / 4 = 0.25 fell below h_min: the last attempt was at h_min itself.
     EXPECT_NE(msg.find("with h = 0.3 "), std::string::npos) << msg;
+    // It names the node with the largest residual force and each term's force on it, the
+    // largest first: the anchor's 50 N/m over 0.01 sqrt(2) m at node 0, nothing else at rest.
+    EXPECT_NE(msg.find("largest residual force at node 0 (by term at the step's start: anchor "
+                       "0.707 N, "),
+              std::string::npos)
+        << msg;
   }
 }
 
