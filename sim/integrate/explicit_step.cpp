@@ -8,11 +8,7 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cmath>
-#include <sstream>
 #include <string>
-#include <utility>
-#include <vector>
 
 namespace crumple {
 
@@ -32,25 +28,6 @@ double Integrator::plastic_rate_from(const VecX& c, const VecX& p, VecX& g) cons
     gmax = std::max(gmax, std::abs(g[h]));
   }
   return gmax;
-}
-
-std::string Integrator::forces_on_node(const State& s, Index node) const {
-  if (node < 0 || 3 * node + 2 >= model_.num_dofs()) return {};
-  std::vector<std::pair<double, std::string>> by_term;
-  for (const auto& e : model_.terms()) {
-    VecX f = VecX::Zero(model_.num_dofs());
-    e.term->add_force(s, f);
-    by_term.emplace_back(f.segment<3>(3 * node).norm(), e.term->name());
-  }
-  // Largest first; a NaN sorts first too (it is where the failure is).
-  std::sort(by_term.begin(), by_term.end(), [](const auto& a, const auto& b) {
-    return std::isnan(a.first) || (!std::isnan(b.first) && a.first > b.first);
-  });
-  std::ostringstream out;
-  out.precision(3);
-  for (std::size_t i = 0; i < by_term.size(); ++i)
-    out << (i ? ", " : "") << by_term[i].second << " " << by_term[i].first << " N";
-  return out.str();
 }
 
 void Integrator::explicit_rhs(double t, const VecX& y, VecX& dy, State& sc) {
@@ -104,13 +81,9 @@ void Integrator::explicit_attempt(const State& s, double h, Attempt& a) {
     a.failure = "non-finite state in the explicit step";
     // Name the terms whose force is not finite at the step's start (if any): the diagnostic
     // a failed run prints.
-    State s0 = s;
     std::string bad;
-    for (const auto& e : model_.terms()) {
-      VecX f = VecX::Zero(model_.num_dofs());
-      e.term->add_force(s0, f);
-      if (!f.allFinite()) bad += (bad.empty() ? "" : ", ") + e.term->name();
-    }
+    for (const auto& [name, f] : forces_by_term(s))
+      if (!f.allFinite()) bad += (bad.empty() ? "" : ", ") + name;
     if (!bad.empty()) a.failure += " (non-finite force at the start from: " + bad + ")";
     return;
   }

@@ -12,6 +12,9 @@
 #include <cmath>
 #include <numeric>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace crumple {
 
@@ -200,6 +203,34 @@ void Integrator::grow_after_accept(const Attempt& a, double h, double proposal, 
   // grows from itself.
   const double next = shortened ? std::min(h * fac, proposal * growth) : h * std::min(fac, growth);
   hist_.h = std::clamp(next, settings_.h_min, settings_.h_max);
+}
+
+std::vector<std::pair<std::string, VecX>> Integrator::forces_by_term(const State& s) const {
+  std::vector<std::pair<std::string, VecX>> out;
+  for (const auto& e : model_.terms()) {
+    VecX f = VecX::Zero(model_.num_dofs());
+    e.term->add_force(s, f);
+    out.emplace_back(e.term->name(), std::move(f));
+  }
+  return out;
+}
+
+std::string Integrator::forces_on_node(const State& s, Index node) const {
+  if (node < 0 || 3 * node + 2 >= model_.num_dofs()) return {};
+  std::vector<std::pair<double, std::string>> by_term;
+  for (const auto& [name, f] : forces_by_term(s))
+    by_term.emplace_back(f.segment<3>(3 * node).norm(), name);
+  // Largest first, a NaN before any number (it is where the failure is).
+  std::stable_sort(by_term.begin(), by_term.end(), [](const auto& a, const auto& b) {
+    if (std::isnan(a.first) || std::isnan(b.first))
+      return std::isnan(a.first) && !std::isnan(b.first);
+    return a.first > b.first;
+  });
+  std::ostringstream out;
+  out.precision(3);
+  for (std::size_t i = 0; i < by_term.size(); ++i)
+    out << (i ? ", " : "") << by_term[i].second << " " << by_term[i].first << " N";
+  return out.str();
 }
 
 void Integrator::retry_after_rejection(const State& s, const Attempt& a, double h, bool implicit,

@@ -33,6 +33,9 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace crumple {
 
@@ -107,6 +110,8 @@ class Integrator {
   double plastic_rate_at(const VecX& x, const VecX& p, VecX& g) const;
   /// The same from the hinge curvatures c of that state.
   double plastic_rate_from(const VecX& c, const VecX& p, VecX& g) const;
+  /// Each force term's name and force at s, evaluated alone: the diagnostics of a failed step.
+  std::vector<std::pair<std::string, VecX>> forces_by_term(const State& s) const;
   /// Each force term's force on `node` at s, largest first ("contact 3.1e+04 N, springs 12 N"):
   /// the diagnostic of a run that fails, naming which physics holds the step down.
   std::string forces_on_node(const State& s, Index node) const;

@@ -12,6 +12,8 @@
 #include "tests/support/grid_mesh.hpp"
 
 #include <gtest/gtest.h>
+
+#include <limits>
 #include <omp.h>
 
 #include <cmath>
@@ -419,6 +421,29 @@ TEST(Integrator, NonSpdMatrixRejectsAndRetriesWithSmallerStep) {
     // largest first: the anchor's 50 N/m over 0.01 sqrt(2) m at node 0, nothing else at rest.
     EXPECT_NE(msg.find("largest residual force at node 0 (by term at the step's start: anchor "
                        "0.707 N, "),
+              std::string::npos)
+        << msg;
+  }
+}
+
+// A term whose force is not finite ends an explicit run at h_min, the failure naming that term
+// (the run's diagnostic) and, at the node it acts on, its force first.
+TEST(Integrator, NonFiniteForceNamesItsTerm) {
+  SheetModel model(sheet(), params(1.0));
+  const Vec3 nan3 = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  model.add_term(std::make_shared<AnchorTerm>(std::vector<Index>{0}, nan3, 1.0),
+                 TermKind::External);
+  auto st = no_switching(IntegrationMode::Explicit);
+  st.h_min = 1e-6;
+  Integrator integ(model, st);
+  State s = model.rest_state();
+  try {
+    integ.advance_to(s, 1e-3);
+    FAIL() << "expected NumericalFailure";
+  } catch (const NumericalFailure& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("non-finite force at the start from: anchor)"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("at node 0 (by term at the step's start: anchor nan N, "),
               std::string::npos)
         << msg;
   }
