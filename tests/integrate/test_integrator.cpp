@@ -12,11 +12,10 @@
 #include "tests/support/grid_mesh.hpp"
 
 #include <gtest/gtest.h>
-
-#include <limits>
 #include <omp.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 
