@@ -292,33 +292,71 @@ def resolve_with_sim(sweep, pts, sim):
     return resolved
 
 
+def min_area_ratio(f):
+    """The least area of any triangle, over its rest area, in the stored frames and cycles of the
+    open run file f (None when it holds no positions)."""
+    import numpy as np
+    tri = f["mesh/triangles"][()]
+    ref = f["mesh/ref_positions"][()]
+
+    def areas(x):
+        return 0.5 * np.linalg.norm(np.cross(x[tri[:, 1]] - x[tri[:, 0]], x[tri[:, 2]] - x[tri[:, 0]]),
+                                    axis=1)
+    rest, least = areas(ref), None
+    for group in ("frames", "cycles"):
+        for k in f.get(group, {}):
+            r = float((areas(f[group][k]["x"][()]) / rest).min())
+            least = r if least is None else min(least, r)
+    return least
+
+
+# Keys the simulator gained after runs were made: a run whose stored configuration lacks one
+# counts as made with it at this value when its own stored states show the key would have
+# changed nothing. The area barrier (docs/MODEL.md §3.1) acts below half a triangle's rest area;
+# a run none of whose stored frames came below AREA_MARGIN of it is taken as the same run with
+# the barrier (checked by rerunning kept runs with it: identical bit for bit).
+AREA_MARGIN = 0.6
+ADDED_KEYS = {("material", "area_barrier"):
+              (True, lambda f: (min_area_ratio(f) or 0.0) >= AREA_MARGIN)}
+
+
 def stored_config_is(run, text):
     """Whether the finished run file RUN was made with the configuration `text` (as
     --print-config prints it). The run stores the hinge yield it derived from a yield radius
-    (integrator.plastic_c0), which --print-config leaves out, so that key is not compared then."""
+    (integrator.plastic_c0), which --print-config leaves out, so that key is not compared then;
+    a key added to the simulator after the run (ADDED_KEYS) is taken at its value there when the
+    run's stored states show it would not have acted."""
     try:
         import h5py
         with h5py.File(run, "r") as f:
             stored = f["config"][()]
-        stored = yaml.safe_load(stored.decode() if isinstance(stored, bytes) else stored)
+            stored = yaml.safe_load(stored.decode() if isinstance(stored, bytes) else stored)
+            new = yaml.safe_load(text)
+            if not isinstance(stored, dict) or not isinstance(new, dict):
+                return False
+            for (section, key), (value, acts_not) in ADDED_KEYS.items():
+                old_sec, new_sec = stored.get(section) or {}, new.get(section) or {}
+                if key not in old_sec and new_sec.get(key) == value and acts_not(f):
+                    stored.setdefault(section, {})[key] = value
     except Exception:  # no readable run file or no /config: not known to match
         return False
-    new = yaml.safe_load(text)
     for c in (stored, new):
-        if isinstance(c, dict) and (c.get("material") or {}).get("yield_radius"):
+        if (c.get("material") or {}).get("yield_radius"):
             (c.get("integrator") or {}).pop("plastic_c0", None)
     return stored == new
 
 
 def write_if_changed(path, text):
+    """Writes text to path unless it holds it already; True if written."""
     if os.path.isfile(path):
         with open(path) as f:
             if f.read() == text:
-                return
+                return False
     tmp = path + ".new"
     with open(tmp, "w") as f:
         f.write(text)
     os.replace(tmp, path)
+    return True
 
 
 def make_rules(sweep, pts, out_dir, results, resolved):
@@ -402,11 +440,11 @@ def main():
         write_if_changed(p["run"] + ".args", " ".join(shlex.quote(x) for x in p["args"]) + "\n")
         if p["run"] in resolved:
             config = p["run"] + ".config"
-            first = not os.path.isfile(config)
-            write_if_changed(config, resolved[p["run"]])
-            # A run made before its configuration file was written keeps standing when it stored
-            # this very configuration: the new file takes the run's date.
-            if first and os.path.isfile(p["run"]) and stored_config_is(p["run"], resolved[p["run"]]):
+            # A run keeps standing when its configuration file is (re)written with the very
+            # configuration the run stored (a run made before the file existed, or before a key
+            # was added to the simulator): the file takes the run's date.
+            if (write_if_changed(config, resolved[p["run"]]) and os.path.isfile(p["run"])
+                    and stored_config_is(p["run"], resolved[p["run"]])):
                 t = os.stat(p["run"]).st_mtime_ns  # to the nanosecond, as make compares
                 os.utime(config, ns=(t, t))
         # A changed analysis argument redoes the analysis, not the run.

@@ -65,6 +65,9 @@ Section material_section() {
           .means("yield fold angle: a fold sharper than it yields; sets integrator.plastic_c0 "
                  "to 2 sin(angle / 2) on every mesh (docs/MODEL.md §7.6); 0 unsets a protocol's "
                  "angle, so that a yield radius or c0 can be given instead"),
+      flag("area_barrier", &S::area_barrier)
+          .means("keep every triangle from being pressed flat: a barrier below half its rest "
+                 "area (sim/model/area_barrier.hpp)"),
   };
   s.all_or_none = {"ks", "kb", "mass"};
   return s;

@@ -34,6 +34,8 @@ struct MaterialParams {
   /// Yield fold angle theta_y (degrees): a fold sharper than theta_y yields, wherever the mesh
   /// puts it. Set, it fixes integrator.plastic_c0 = 2 sin(theta_y / 2) on every mesh; 0: unset.
   double yield_angle = 0;
+  /// Keep every triangle above half its rest area (sim/model/area_barrier.hpp).
+  bool area_barrier = true;
   /// True when the material states the yield (yield_radius or yield_angle) and so sets
   /// integrator.plastic_c0.
   bool states_yield() const { return yield_radius > 0 || yield_angle > 0; }

@@ -25,6 +25,7 @@ ResolvedMaterial resolve_material(const MaterialParams& m, double sheet_area, in
   const double scale = std::sqrt(r.model.ks * r.model.mass);
   r.model.b_iso = m.drag_ratio * scale;
   r.model.b_int = m.internal_damping_ratio * scale;
+  r.model.area_barrier = m.area_barrier;
   return r;
 }
 

@@ -9,6 +9,7 @@ struct ModelParams {
   double mass = 1.0;   ///< mass per node, M
   double b_iso = 0.0;  ///< isotropic drag (8), M/T
   double b_int = 0.0;  ///< internal (dashpot) damping (9), M/T
+  bool area_barrier = true;  ///< keep triangles from collapsing (area_barrier.hpp)
 };
 
 }  // namespace crumple

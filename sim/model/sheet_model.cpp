@@ -1,6 +1,7 @@
 // The sheet model: all terms on one mesh, assembled on one pattern (sheet_model.hpp).
 #include "sim/model/sheet_model.hpp"
 
+#include "sim/model/area_barrier.hpp"
 #include "sim/model/damping.hpp"
 #include "sim/model/springs.hpp"
 
@@ -15,6 +16,8 @@ SheetModel::SheetModel(const Mesh& mesh, const ModelParams& params, BendingTerm:
   bending_ = std::make_shared<BendingTerm>(mesh_, params_.kb, assembly);
   add_term(std::make_shared<SpringTerm>(mesh_, params_.ks), TermKind::Stretch);
   add_term(bending_, TermKind::Bend);
+  if (params_.area_barrier)
+    add_term(std::make_shared<AreaBarrierTerm>(mesh_, params_.ks), TermKind::Stretch);
   if (params_.b_iso != 0.0)
     add_term(std::make_shared<DragTerm>(mesh_.num_nodes(), params_.b_iso), TermKind::Dissipative);
   if (params_.b_int != 0.0)

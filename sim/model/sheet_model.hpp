@@ -1,7 +1,7 @@
 // The sheet model: all force terms on one mesh, their energies, the total force and the
 // assembled Jacobians Hx, Hv, Hp (paper eq. 2, 27, 34).
 //
-// Internal terms (springs, bending, isotropic drag, internal damping) are created from the mesh
+// Internal terms (springs, the area barrier, bending, isotropic drag, internal damping) are created from the mesh
 // and ModelParams. Further terms (self-contact, the external terms of protocol stages) are added
 // with add_term and removed with remove_term; after the set of terms, or the node pairs a term
 // couples, has changed, call rebuild_pattern() (cheap when nothing changed).

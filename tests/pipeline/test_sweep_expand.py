@@ -123,6 +123,48 @@ class Expand(unittest.TestCase):
                               ".args protocols/axial_crumpling.yaml | $(SIM)",
                               read(os.path.join(out, "points.mk")))
 
+    def test_a_run_from_before_the_area_barrier_stands_where_it_would_not_have_acted(self):
+        import h5py
+        import numpy as np
+        with tempfile.TemporaryDirectory() as tmp:
+            pts = json.loads(read(os.path.join(expand(GOOD, tmp)[2], "points.json")))["points"]
+            printed = [subprocess.run([SIM, "--print-config"] + p["args"], cwd=REPO,
+                                      capture_output=True, text=True, check=True).stdout
+                       for p in pts[:3]]
+            self.assertIn("  area_barrier: true\n", printed[0])
+            before = [t.replace("  area_barrier: true\n", "") for t in printed]
+            # Two runs with the same configuration from before the key: in one every stored
+            # triangle kept most of its area, in the other one triangle fell to 0.55 of it, near
+            # enough to the barrier's onset (0.5) that the run might have differed with it; a
+            # third differs elsewhere too.
+            ref = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]], float)
+            tri = np.array([[0, 1, 2], [1, 3, 2]])
+            squashed = ref.copy()
+            squashed[2] = [0, 0.55, 0]
+            runs = ((pts[0]["run"], before[0], ref * 1.02), (pts[1]["run"], before[1], squashed),
+                    (pts[2]["run"], before[2].replace("compaction: 0.5", "compaction: 0.4"), ref))
+            for run, text, x in runs:
+                with h5py.File(run, "w") as f:
+                    f["config"] = text
+                    f["mesh/triangles"] = tri
+                    f["mesh/ref_positions"] = ref
+                    f["frames/000000/x"] = ref
+                    f["frames/000001/x"] = x
+                os.utime(run, ns=(1000123456789, 1000123456789))
+            r, _, out = expand(GOOD, tmp, sim=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(os.stat(pts[0]["run"] + ".config").st_mtime_ns, 1000123456789)
+            self.assertGreater(os.stat(pts[1]["run"] + ".config").st_mtime, 1001)
+            self.assertGreater(os.stat(pts[2]["run"] + ".config").st_mtime, 1001)
+            # A configuration file written before the key, then rewritten with it: the same.
+            cfg = pts[0]["run"] + ".config"
+            with open(cfg, "w") as f:
+                f.write(before[0])
+            os.utime(cfg, (7, 7))
+            self.assertEqual(expand(GOOD, tmp, sim=True)[0].returncode, 0)
+            self.assertEqual(read(cfg), printed[0])
+            self.assertEqual(os.stat(cfg).st_mtime_ns, 1000123456789)
+
     def test_a_subset_of_the_seeds_runs_first_and_the_rest_reuses_it(self):
         with tempfile.TemporaryDirectory() as tmp:
             r, _, out = expand(GOOD, tmp, extra=["--seeds", "7"])
