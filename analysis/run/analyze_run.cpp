@@ -248,6 +248,9 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt_given) {
     r.new_crease_length_m = crease_length(mesh, fresh) * unit;
     r.crease_length_L0 = r.crease_length_m / out.L0_m;
     r.new_crease_length_L0 = r.new_crease_length_m / out.L0_m;
+    const double rotation = plastic_rotation(mesh, c.p);
+    r.plastic_rotation_L0 = rotation * unit / out.L0_m;
+    if (rotation > 0) r.creased_rotation_share = plastic_rotation(mesh, c.p, &m.creased) / rotation;
     const auto st = stage_ends.find(c.cycle);
     if (st != stage_ends.end())
       add_stages(r, mesh, ctx.L0, st->second, m.creased, previous, threshold, out.warnings);

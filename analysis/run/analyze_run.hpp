@@ -96,6 +96,11 @@ struct CycleResult {
   /// segments ending inside a facet); nullopt when l = 0. Slightly negative values are pixel
   /// error of P on a network without dangling ends.
   std::optional<double> dangling_fraction;
+  /// Plastic rotation over L0 (radians): creases/crease_edges.hpp plastic_rotation, over every
+  /// hinge; and the share of it the creased hinges carry (nullopt when it is zero). A mesh that
+  /// spreads a fold over more hinge rows keeps the first and lowers the second.
+  double plastic_rotation_L0 = 0;
+  std::optional<double> creased_rotation_share;
   std::vector<StageCreases> stages;  ///< per stage end of the cycle, lengths in L0
   std::optional<double> new_length_share_after_compress;  ///< see share_after_last()
   std::vector<FacetRecord> facets;

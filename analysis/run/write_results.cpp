@@ -129,6 +129,8 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
                          {"new_crease_length_L0", c.new_crease_length_L0},
                          {"perimeter_P", c.perimeter_P},
                          {"dangling_fraction", json_or_null(c.dangling_fraction)},
+                         {"plastic_rotation_L0", c.plastic_rotation_L0},
+                         {"creased_rotation_share", json_or_null(c.creased_rotation_share)},
                          {"stages", stages_json(c)},
                          {"new_length_share_after_compress",
                           json_or_null(c.new_length_share_after_compress)},

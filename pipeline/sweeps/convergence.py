@@ -60,7 +60,11 @@ QUANTITIES = [("perimeter_P", "P (facet perimeters)", "L0"),
               ("n_facets", "facet count", "1"),
               ("single_triangle_fraction", "single-triangle facets", "fraction"),
               ("a_fit", "a (facet-area shape)", "1"),
-              ("dangling_fraction", "dangling crease share", "fraction")]
+              ("dangling_fraction", "dangling crease share", "fraction"),
+              # How much the sheet folded, whatever the threshold and however many hinge rows
+              # carry a fold (analysis/creases/crease_edges.hpp), and the creases' share of it.
+              ("plastic_rotation_L0", "plastic rotation (sum of fold angle x length)", "rad L0"),
+              ("creased_rotation_share", "creased share of the plastic rotation", "fraction")]
 ORDER_RANGE = (0.5, 4.0)
 ASSUMED_ORDER = 1.0
 PRESET_TOLERANCES = {"quick": 0.15, "paper": 0.05}

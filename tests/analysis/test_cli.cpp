@@ -201,6 +201,11 @@ TEST(CrumpleAnalyze, StagesThresholdRuleAndSensitivity) {
     EXPECT_NEAR(c[i]["new_length_share_after_compress"].get<double>(), 0.5, 1e-9) << i;
     EXPECT_NEAR(st[3]["crease_length_L0"].get<double>(), 2.0 * (i + 1), 1e-9) << i;
     EXPECT_TRUE(c[i]["dangling_fraction"].is_number());
+    // i + 1 lines folded by 2 asin(0.45) and as many by 2 asin(0.1), each across the sheet;
+    // all of them creased.
+    EXPECT_NEAR(c[i]["plastic_rotation_L0"].get<double>(),
+                2.0 * (i + 1) * (std::asin(0.45) + std::asin(0.1)), 1e-9) << i;
+    EXPECT_NEAR(c[i]["creased_rotation_share"].get<double>(), 1.0, 1e-12) << i;
     EXPECT_TRUE(c[i]["n_single_triangle_facets"].is_number_integer());
     EXPECT_TRUE(c[i]["single_triangle_fraction"].is_number());
   }

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <random>
@@ -38,6 +39,33 @@ TEST(Creases, LengthIsSumOfChosenRestLengths) {
   EXPECT_NEAR(crease_length(m, crease_hinges(q, 0.05)), 0.1, 1e-12);
   const auto fresh = new_creases(crease_hinges(p, 0.05), crease_hinges(q, 0.05));
   for (std::size_t h = 0; h < p.size(); ++h) EXPECT_EQ(fresh[h], c[h] && !(q[h] > 0.05));
+}
+
+// The plastic rotation of a fold is its angle times its length however many hinge rows carry
+// it; the crease length counts only rows above the threshold. A 60 degree fold across the sheet
+// on one row of hinges, then spread over three rows of 20 degrees: the same rotation, no crease
+// at a 30 degree threshold.
+TEST(Creases, PlasticRotationDoesNotDependOnHowManyRowsCarryAFold) {
+  const MeshData m = synth::square_grid_mesh(8, 0.1);
+  const double dx = 0.1 / 8, A = M_PI / 3, threshold = 2 * std::sin(M_PI / 12);
+  auto c_of = [](double angle) { return 2 * std::sin(angle / 2); };
+  std::vector<double> one(m.hinges.size(), 0.0), three(m.hinges.size(), 0.0);
+  for (auto h : synth::hinges_on_line(m, 0, 3 * dx)) one[h] = -c_of(A);
+  for (int k : {2, 3, 4})
+    for (auto h : synth::hinges_on_line(m, 0, k * dx)) three[h] = c_of(A / 3);
+  EXPECT_NEAR(plastic_rotation(m, one), A * 0.1, 1e-12);
+  EXPECT_NEAR(plastic_rotation(m, three), A * 0.1, 1e-12);
+  EXPECT_NEAR(crease_length(m, crease_hinges(one, threshold)), 0.1, 1e-12);
+  EXPECT_EQ(crease_length(m, crease_hinges(three, threshold)), 0.0);
+  // Restricted to the creased hinges: all of the single row's, none of the spread fold's.
+  const auto c1 = crease_hinges(one, threshold), c3 = crease_hinges(three, threshold);
+  EXPECT_NEAR(plastic_rotation(m, one, &c1), A * 0.1, 1e-12);
+  EXPECT_EQ(plastic_rotation(m, three, &c3), 0.0);
+  // |p| beyond 2 (c = 2 sin(theta/2) of a complete fold) counts as a complete fold, pi.
+  std::vector<double> over(m.hinges.size(), 0.0);
+  for (auto h : synth::hinges_on_line(m, 0, 3 * dx)) over[h] = 2.5;
+  EXPECT_NEAR(plastic_rotation(m, over), M_PI * 0.1, 1e-12);
+  EXPECT_THROW(plastic_rotation(m, std::vector<double>(3, 0.0)), std::invalid_argument);
 }
 
 TEST(RunReader, ReadsWhatWasWritten) {
