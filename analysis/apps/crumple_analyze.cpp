@@ -126,6 +126,14 @@ void add_run_options(CLI::App& app, AnalyzeOptions& opt, double& absolute, doubl
                  "every mesh (docs/studies/convergence_flat_unfold_closed/)")
       ->check(CLI::PositiveNumber)
       ->excludes(close_px);
+  app.add_option("--crease-width-mm", opt.crease_width_mm,
+                 "count a hinge as a crease when the fold angle summed over the hinges beside it, "
+                 "within a band this many millimetres wide, exceeds the threshold, so that a fold "
+                 "a fine mesh spreads over parallel rows counts once (analysis/creases/"
+                 "crease_band.hpp); the crease map is closed over the same width unless "
+                 "--close-mm says otherwise")
+      ->check(CLI::PositiveNumber)
+      ->excludes(close_px);
   app.add_option("--watershed-h-px", opt.segment.watershed_h_px,
                  "also cut facets at their necks, as the experiments' segmentation does: a marker "
                  "watershed of the distance to the nearest crease, seeded at the domes higher "

@@ -10,7 +10,8 @@ namespace crumple::analysis {
 std::vector<StageCreases> account_stages(const MeshData& mesh,
                                          const std::vector<const StageEndData*>& stages,
                                          const std::vector<char>& cycle_end,
-                                         const std::vector<char>& previous_end, double threshold) {
+                                         const std::vector<char>& previous_end, double threshold,
+                                         const CreaseBand* band) {
   const std::size_t h = mesh.hinge_edge.size();
   if (cycle_end.size() != h || (!previous_end.empty() && previous_end.size() != h))
     throw std::invalid_argument("account_stages: one flag per hinge expected");
@@ -18,7 +19,7 @@ std::vector<StageCreases> account_stages(const MeshData& mesh,
   std::vector<StageCreases> out;
   for (const StageEndData* s : stages) {
     if (s->p.size() != h) throw std::invalid_argument("account_stages: p has the wrong size");
-    creased.push_back(crease_hinges(s->p, threshold));
+    creased.push_back(select_creases(s->p, threshold, band));
     StageCreases r;
     r.index = s->stage_index;
     r.stage = s->stage;

@@ -11,6 +11,7 @@
 // What falls back below the threshold at a stage end is reported separately (lost_length).
 #pragma once
 
+#include "analysis/creases/crease_band.hpp"
 #include "analysis/io/run_data.hpp"
 
 #include <optional>
@@ -35,7 +36,8 @@ struct StageCreases {
 std::vector<StageCreases> account_stages(const MeshData& mesh,
                                          const std::vector<const StageEndData*>& stages,
                                          const std::vector<char>& cycle_end,
-                                         const std::vector<char>& previous_end, double threshold);
+                                         const std::vector<char>& previous_end, double threshold,
+                                         const CreaseBand* band = nullptr);
 
 /// Share of `cycle_new_length` made at the stage ends after the last one of type `stage_type`;
 /// nullopt without stages, without such a stage, or when cycle_new_length is not positive.

@@ -119,9 +119,9 @@ std::map<int, std::vector<const StageEndData*>> stages_by_cycle(
 /// Per-stage accounting of one cycle into r, lengths in L0.
 void add_stages(CycleResult& r, const MeshData& mesh, double L0,
                 const std::vector<const StageEndData*>& stages, const std::vector<char>& now,
-                const std::vector<char>& before, double threshold,
+                const std::vector<char>& before, double threshold, const CreaseBand* band,
                 std::vector<std::string>& warnings) {
-  r.stages = account_stages(mesh, stages, now, before, threshold);
+  r.stages = account_stages(mesh, stages, now, before, threshold, band);
   double sum = 0.0;
   for (auto& s : r.stages) {
     s.crease_length /= L0;
@@ -186,8 +186,10 @@ AnalyzeOptions raster_for_mesh(const RunData& run, const AnalyzeOptions& opt) {
         std::sqrt(4.0 * mean_triangle_area(run.mesh) / std::sqrt(3.0)) * run.length_unit_m;
     o.px_per_cm = opt.px_per_edge / (100.0 * edge_m);
   }
-  if (opt.close_mm > 0)
-    o.segment.close_px = static_cast<int>(std::lround(opt.close_mm * 0.1 * o.px_per_cm));
+  // A band of creases is drawn row by row; closed over its width it is one crease.
+  if (opt.close_mm <= 0 && opt.crease_width_mm > 0) o.close_mm = opt.crease_width_mm;
+  if (o.close_mm > 0)
+    o.segment.close_px = static_cast<int>(std::lround(o.close_mm * 0.1 * o.px_per_cm));
   return o;
 }
 
@@ -215,6 +217,11 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt_given) {
   ctx.L0_px = ctx.L0 * px_per_unit;
   ctx.segment = opt.segment;
   ctx.crease_px = opt.crease_px;
+  std::optional<CreaseBand> band;
+  if (opt.crease_width_mm > 0) {
+    band.emplace(mesh, opt.crease_width_mm * 1e-3 / unit);
+    ctx.band = &*band;
+  }
   out.px_per_m = opt.px_per_cm * 100.0;
   out.close_px = closing_kernel_px(opt.segment.close_px);
   out.image_width = ctx.frame.width;
@@ -253,7 +260,8 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt_given) {
     if (rotation > 0) r.creased_rotation_share = plastic_rotation(mesh, c.p, &m.creased) / rotation;
     const auto st = stage_ends.find(c.cycle);
     if (st != stage_ends.end())
-      add_stages(r, mesh, ctx.L0, st->second, m.creased, previous, threshold, out.warnings);
+      add_stages(r, mesh, ctx.L0, st->second, m.creased, previous, threshold, ctx.band,
+                 out.warnings);
     previous = m.creased;
 
     const Segmentation& seg = m.seg;

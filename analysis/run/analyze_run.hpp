@@ -44,6 +44,11 @@ struct AnalyzeOptions {
   /// instead of segment.close_px pixels: crease lines closer than that merge into one and the
   /// facets between them vanish, at the same physical scale on every mesh and raster.
   double close_mm = 0.0;
+  /// When > 0 (--crease-width-mm), a hinge is a crease when the fold angle summed across a band
+  /// of this width (millimetres of the flat sheet) exceeds the threshold
+  /// (creases/crease_band.hpp); the crease map is then closed over the same width unless
+  /// close_mm is given.
+  double crease_width_mm = 0.0;
   int crease_px = 1;                              ///< crease line width in pixels
   int bootstrap = 200;                            ///< resamples for the a interval and KS p-value
   /// The resolution floor of the truncated facet law (fits/truncated_shape.hpp), in mean mesh

@@ -9,7 +9,7 @@ namespace crumple::analysis {
 CreaseMeasure measure_creases(const MeasureContext& ctx, const std::vector<double>& p,
                               double threshold) {
   CreaseMeasure m;
-  m.creased = crease_hinges(p, threshold);
+  m.creased = select_creases(p, threshold, ctx.band);
   for (char f : m.creased) m.crease_edges += f;
   m.length = crease_length(*ctx.mesh, m.creased);
   m.seg = segment_facets(ctx.sheet, crease_layer(*ctx.mesh, m.creased, ctx.frame, ctx.crease_px),

@@ -3,6 +3,7 @@
 // table repeats at others.
 #pragma once
 
+#include "analysis/creases/crease_band.hpp"
 #include "analysis/facets/segment.hpp"
 #include "analysis/io/run_data.hpp"
 #include "analysis/raster/raster_frame.hpp"
@@ -22,10 +23,12 @@ struct MeasureContext {
   double L0_px = 0;  ///< sheet size in pixels
   SegmentParams segment;
   int crease_px = 1;  ///< crease line width
+  /// Creases summed across a band (creases/crease_band.hpp) when set; else hinge by hinge.
+  const CreaseBand* band = nullptr;
 };
 
 struct CreaseMeasure {
-  std::vector<char> creased;  ///< h flags: |p| > threshold
+  std::vector<char> creased;  ///< h flags: |p| > threshold, or the band rule
   long crease_edges = 0;
   double length = 0;       ///< plastic-edge length, mesh length units
   Segmentation seg;        ///< facets of the crease map

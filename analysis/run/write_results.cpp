@@ -96,6 +96,8 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
       {"crease_px", opt.crease_px},
       {"close_px", res.close_px},
       {"close_mm", opt.close_mm > 0 ? nlohmann::json(opt.close_mm) : nlohmann::json()},
+      {"crease_width_mm",
+       opt.crease_width_mm > 0 ? nlohmann::json(opt.crease_width_mm) : nlohmann::json()},
       {"min_facet_px", opt.segment.min_facet_px},
       {"watershed_h_px", opt.segment.watershed_h_px},
       {"bootstrap_resamples", opt.bootstrap},

@@ -331,6 +331,45 @@ TEST(CrumpleAnalyze, ClosingInMillimetresMergesCloseCreases) {
   fs::remove_all(dir);
 }
 
+// --crease-width-mm: three neighbouring rows of 8 degrees each (a 24-degree fold spread over
+// grid rows 5 mm apart) are no crease hinge by hinge at 18.3 degrees and a crease across a band
+// reaching from each row to the others, closed over the band's width unless --close-mm is given;
+// recorded in the parameters; refused beside --close-px.
+TEST(CrumpleAnalyze, CreasesSummedAcrossABand) {
+  const fs::path dir = scratch("crease_band");
+  const MeshData m = synth::square_grid_mesh(20, 0.1);
+  std::vector<double> p(m.hinges.size(), 0.0);
+  for (double x : {0.045, 0.05, 0.055})
+    for (auto h : synth::hinges_on_line(m, 0, x)) p[h] = 2 * std::sin(4.0 * M_PI / 180);
+  synth::write_run((dir / "run.h5").string(), m, {p});
+  const std::string run = (dir / "run.h5").string();
+  EXPECT_EQ(run_analyze(run + " -o " + (dir / "both").string() +
+                        " --crease-width-mm 2 --close-px 3"), 2);
+  EXPECT_FALSE(fs::exists(dir / "both"));
+  auto stats = [&](const std::string& name, const std::string& args) {
+    const fs::path out = dir / name;
+    EXPECT_EQ(run_analyze(run + " -o " + out.string() + " --crease-angle 18.3 --px-per-cm 40 " +
+                          args), 0) << args;
+    std::ifstream in(out / "stats.json");
+    return nlohmann::json::parse(in);
+  };
+  const auto single = stats("single", "");
+  EXPECT_TRUE(single["parameters"]["crease_width_mm"].is_null());
+  EXPECT_EQ(single["cycles"][0]["crease_length_L0"].get<double>(), 0.0);
+  const auto band = stats("band", "--crease-width-mm 21");  // reaches 10.5 mm to each side
+  EXPECT_DOUBLE_EQ(band["parameters"]["crease_width_mm"].get<double>(), 21.0);
+  EXPECT_NEAR(band["cycles"][0]["crease_length_L0"].get<double>(), 3.0, 1e-9);
+  EXPECT_EQ(band["parameters"]["close_px"].get<int>(), 85);  // 21 mm at 40 px/cm, made odd
+  EXPECT_EQ(band["cycles"][0]["n_facets"].get<int>(), 2);     // the band closed into one crease
+  const auto narrow = stats("narrow", "--crease-width-mm 11");  // the outer rows see 16 degrees
+  EXPECT_NEAR(narrow["cycles"][0]["crease_length_L0"].get<double>(), 1.0, 1e-9);
+  const auto open = stats("open", "--crease-width-mm 21 --close-mm 1");
+  EXPECT_EQ(open["parameters"]["close_px"].get<int>(), 5);
+  EXPECT_EQ(open["cycles"][0]["n_facets"].get<int>(), 4);     // three lines drawn apart
+  if (::testing::Test::HasFailure()) return;
+  fs::remove_all(dir);
+}
+
 TEST(CrumpleAnalyze, BadInputExitsTwoAndWritesNothing) {
   const fs::path dir = scratch("bad");
   const MeshData m = synth::square_grid_mesh(4, 0.1);
