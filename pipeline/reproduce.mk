@@ -30,7 +30,7 @@ RUNS  := $(foreach s,$(SEEDS_USED),$(RUNDIR)/seed$(s).h5)
 STATS := $(foreach s,$(SEEDS_USED),$(RUNDIR)/seed$(s).analysis/stats.json)
 
 .PHONY: reproduce report runs analysis
-.SECONDARY: $(RUNS) $(STATS)
+.SECONDARY: $(RUNS) $(STATS) $(addsuffix .config,$(RUNS))
 
 # The build must finish before the runs start; the runs then go in parallel, here or (with
 # SCHEDULER=slurm, pipeline/slurm/slurm.mk) as a Slurm array with the report as a dependent job.
@@ -49,7 +49,18 @@ runs: $(RUNS)
 analysis: $(STATS)
 report: $(RESULTS)/REPORT.md
 
-$(RUNDIR)/seed%.h5: $(PROTOCOL) $(PRESET_FILE)
+# A run depends on its configuration as crumple-sim resolves it (RUN.h5.config, rewritten only
+# when it changes; pipeline/sweeps/run_config.py), not on the protocol and preset files' dates: an
+# edit there that changes no run's configuration (a comment, a key the preset overrides) redoes
+# nothing, one that does redoes exactly the runs it changes. An invalid configuration stops here,
+# before any run. A run made before its configuration file stands when it stored the same one.
+$(RUNDIR)/seed%.h5.config: resolve-run-config
+	@$(PYTHON) pipeline/sweeps/run_config.py $(RUNDIR)/seed$*.h5 -- $(SIM) $(PROTOCOL) --seed $* \
+	  $(PRESET_SETS)
+.PHONY: resolve-run-config
+resolve-run-config:
+
+$(RUNDIR)/seed%.h5: $(RUNDIR)/seed%.h5.config
 	@mkdir -p $(RUNDIR)
 	$(SIM) $(PROTOCOL) -o $@ --seed $* --threads $(RUN_THREADS) $(PRESET_SETS) \
 	  $(if $(wildcard $@.tmp),--resume,--force)

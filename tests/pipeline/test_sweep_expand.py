@@ -368,6 +368,48 @@ class Expand(unittest.TestCase):
             self.assertFalse(os.path.exists(out))
 
 
+class RunConfig(unittest.TestCase):
+    """pipeline/sweeps/run_config.py as make reproduce calls it for each run."""
+    RUN_CONFIG = os.path.join(REPO, "pipeline", "sweeps", "run_config.py")
+    ARGS = ["protocols/axial_crumpling.yaml", "--seed", "3", "--set", "mesh.nodes=200"]
+
+    def call(self, run, args):
+        return subprocess.run([sys.executable, self.RUN_CONFIG, run, "--", SIM] + args, cwd=REPO,
+                              capture_output=True, text=True)
+
+    def test_written_when_changed_and_a_matching_run_stands(self):
+        import h5py
+        with tempfile.TemporaryDirectory() as tmp:
+            run = os.path.join(tmp, "runs", "seed3.h5")
+            r = self.call(run, self.ARGS)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            printed = subprocess.run([SIM, "--print-config"] + self.ARGS, cwd=REPO,
+                                     capture_output=True, text=True, check=True).stdout
+            self.assertEqual(read(run + ".config"), printed)
+            os.utime(run + ".config", (5, 5))
+            self.assertEqual(self.call(run, self.ARGS).returncode, 0)
+            self.assertEqual(os.stat(run + ".config").st_mtime, 5)  # unchanged: not rewritten
+            # A finished run that stored this configuration: the rewritten file takes its date.
+            with h5py.File(run, "w") as f:
+                f["config"] = printed
+            os.utime(run, ns=(1000123456789, 1000123456789))
+            self.assertEqual(self.call(run, self.ARGS + ["--set", "mesh.nodes=250"]).returncode, 0)
+            self.assertGreater(os.stat(run + ".config").st_mtime, 1001)  # changed: the run is redone
+            self.assertEqual(self.call(run, self.ARGS).returncode, 0)
+            self.assertEqual(os.stat(run + ".config").st_mtime_ns, 1000123456789)  # back: it stands
+
+    def test_an_invalid_configuration_writes_nothing(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            run = os.path.join(tmp, "seed3.h5")
+            r = self.call(run, self.ARGS + ["--set", "protocol.bogus=1"])
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("protocol.bogus", r.stderr)
+            self.assertIn(run, r.stderr)
+            self.assertFalse(os.path.exists(run + ".config"))
+            self.assertEqual(subprocess.run([sys.executable, self.RUN_CONFIG, run], cwd=REPO,
+                                            capture_output=True, text=True).returncode, 2)
+
+
 if __name__ == "__main__":
     SIM = os.path.abspath(sys.argv.pop(1))
     unittest.main()
