@@ -49,10 +49,12 @@ AreaBarrierTerm::AreaBarrierTerm(const Mesh& mesh, double ks, double onset)
   const Index nt = mesh.num_triangles();
   n0_sq_.resize(nt);
   K_.resize(nt);
+  limit_.resize(nt);
   const VecX ref = mesh.ref_flat();
   for (Index t = 0; t < nt; ++t) {
     const auto g = geometry(mesh, ref, t);
     n0_sq_[t] = g.n.squaredNorm();
+    limit_[t] = q0_ * n0_sq_[t];
     K_[t] = ks * (g.d[0].squaredNorm() + g.d[1].squaredNorm() + g.d[2].squaredNorm()) / 3.0;
   }
 }
@@ -62,14 +64,17 @@ double AreaBarrierTerm::squared_area_ratio(const VecX& x, Index t) const {
 }
 
 std::vector<Index> AreaBarrierTerm::active_triangles(const VecX& x) const {
-  // One cross product per triangle, in parallel; nearly all triangles are far from the onset.
-  const Index nt = mesh_->num_triangles();
-  std::vector<char> on(nt);
-#pragma omp parallel for schedule(static)
-  for (Index t = 0; t < nt; ++t) on[t] = squared_area_ratio(x, t) < q0_;
+  // One cross product and comparison per triangle, on every force evaluation: nearly all
+  // triangles are far from the onset, so one serial pass without a division or a second list is
+  // cheaper than a parallel one (bench_assembly's BM_Forces times it).
   std::vector<Index> out;
-  for (Index t = 0; t < nt; ++t)
-    if (on[t]) out.push_back(t);
+  const Index nt = mesh_->num_triangles();
+  for (Index t = 0; t < nt; ++t) {
+    const auto& tr = mesh_->triangles[t];
+    const Vec3 x0 = node(x, tr[0]);
+    if ((node(x, tr[1]) - x0).cross(node(x, tr[2]) - x0).squaredNorm() < limit_[t])
+      out.push_back(t);
+  }
   return out;
 }
 

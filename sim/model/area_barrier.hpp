@@ -53,6 +53,7 @@ class AreaBarrierTerm : public ForceTerm {
   const Mesh* mesh_;
   double q0_;
   std::vector<double> n0_sq_;  ///< |n0|^2 = (2 A0)^2 per triangle
+  std::vector<double> limit_;  ///< q0 |n0|^2: active while |n|^2 is below it
   std::vector<double> K_;      ///< ks l_t^2 per triangle
   std::vector<std::array<BlockSlot, 9>> slots_;
 };
