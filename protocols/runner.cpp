@@ -182,7 +182,7 @@ bool ProtocolRunner::advance_stage(Stage& stage, StageContext& ctx, State& s, Ru
     try {
       stepper_.advance_to(s, t_end);
     } catch (const NumericalFailure& e) {
-      sink.checkpoint(checkpoint_here());
+      sink.failure_checkpoint(checkpoint_here());
       std::ostringstream os;
       os << "stage " << stage.type() << " (cycle " << c << ", stage " << k + 1 << "), t = " << s.t
          << " s: " << e.what();

@@ -45,6 +45,10 @@ class RunSink {
   virtual void cycle_end(int cycle, const State& s) = 0;
   /// Persist everything so far together with the checkpoint (atomically).
   virtual void checkpoint(const Checkpoint& c) = 0;
+  /// The checkpoint at a numerical failure: the state the failing step started from. A sink
+  /// that keeps files keeps its previous checkpoint too (a resume from the failing state repeats
+  /// the failure; one from before it can try other settings).
+  virtual void failure_checkpoint(const Checkpoint& c) { checkpoint(c); }
 };
 
 struct RunnerSettings {

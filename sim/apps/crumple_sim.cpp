@@ -255,6 +255,9 @@ int run(const Options& o) {
     rename_or_throw(paths.xdmf + ".new", paths.xdmf);
     rename_or_throw(paths.xdmf_cycles + ".new", paths.xdmf_cycles);
   }
+  // A checkpoint kept from an earlier failure of this run is stale once the run is complete.
+  std::error_code ec;
+  std::filesystem::remove(before_failure_path(paths.tmp), ec);
   if (!o.quiet) {
     print_summary(o.output, s, rec, run);
     std::fprintf(stderr, "%s\n", run_line(label, s, rec, p.mesh.size).c_str());
@@ -276,6 +279,8 @@ int main(int argc, char** argv) {
       "  RUN.cycles.xdmf  the state at each cycle's end for ParaView (output.xdmf)\n"
       "  RUN.h5.tmp    while running: the run so far with a checkpoint (--resume continues it);\n"
       "                renamed to RUN.h5 when complete\n"
+      "  RUN.h5.tmp.before-failure  after a numerical failure: the checkpoint before it (RUN.h5.tmp\n"
+      "                holds the failing state); removed when the run completes\n"
       "Exit codes: 0 done; 2 bad input (nothing written); 3 numerical failure (checkpoint kept in\n"
       "RUN.h5.tmp, continue with --resume); 128+N stopped by signal N (SIGTERM 143, SIGINT 130)\n"
       "after a checkpoint; 1 anything else (e.g. a write failure; the last checkpoint is kept).");
@@ -347,6 +352,11 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   } catch (const NumericalFailure& e) {
     std::fprintf(stderr, "crumple-sim: numerical failure: %s\n%s", e.what(), kept().c_str());
+    const std::string before = before_failure_path(tmp);
+    if (fs::exists(before, ec))
+      std::fprintf(stderr, "crumple-sim: the checkpoint before the failure is kept in %s; move it "
+                           "to %s to resume from there (with other settings: the failing state "
+                           "fails again)\n", before.c_str(), tmp.c_str());
     return kExitNumerical;
   } catch (const Interrupted& e) {
     std::fprintf(stderr, "crumple-sim: %s\n%s", e.what(), kept().c_str());

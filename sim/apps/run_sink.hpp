@@ -10,8 +10,13 @@
 #include "sim/io/run_file.hpp"
 
 #include <chrono>
+#include <filesystem>
 
 namespace crumple {
+
+/// Where a run that failed numerically keeps its last checkpoint before the failure: beside the
+/// checkpoint file TMP (RUN.h5.tmp), as TMP.before-failure.
+inline std::string before_failure_path(const std::string& tmp) { return tmp + ".before-failure"; }
 
 class FileSink : public RunSink {
  public:
@@ -60,6 +65,14 @@ class FileSink : public RunSink {
     rec_.checkpoint = save_restart(c);
     write_run_file_atomic(path_, rec_);
     output_s_ += since(t0);
+  }
+  /// The previous checkpoint file, if any, becomes before_failure_path(PATH), then the failing
+  /// state is written to PATH as any checkpoint.
+  void failure_checkpoint(const Checkpoint& c) override {
+    std::error_code ec;
+    if (std::filesystem::exists(path_, ec))
+      std::filesystem::rename(path_, before_failure_path(path_), ec);
+    checkpoint(c);
   }
   void flush_log() {
     rec_.log.insert(rec_.log.end(), integ_.log().begin(), integ_.log().end());

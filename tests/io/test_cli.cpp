@@ -225,6 +225,46 @@ TEST(Cli, FailedRunResumesWithCorrectedStepLimits) {
   EXPECT_EQ(r.resumes[0].t, 0.0);
 }
 
+// A run failing numerically after checkpoints (here in the second cycle's compression, at a
+// step limit it cannot meet there) keeps the failing state in RUN.h5.tmp and the checkpoint
+// before it in RUN.h5.tmp.before-failure, says so, and goes on from the latter with other
+// settings; the kept file is removed once the run completes.
+TEST(Cli, NumericalFailureKeepsTheCheckpointBeforeIt) {
+  const fs::path cfg = write("tiny.yaml", kTiny);
+  const fs::path out = kDir / "late_failure.h5";
+  const std::string tmp = out.string() + ".tmp", before = tmp + ".before-failure";
+  for (const auto& p : {out.string(), tmp, before}) fs::remove(p);
+  const std::string base = cfg.string() + " -o " + out.string() + " --threads 1 --quiet";
+  const Result failed = sim(base + " --set integrator.h_min=1e-4");
+  ASSERT_EQ(failed.code, 3) << failed.err;
+  EXPECT_NE(failed.err.find("checkpoint before the failure is kept in " + before),
+            std::string::npos) << failed.err;
+  ASSERT_TRUE(fs::exists(tmp));
+  ASSERT_TRUE(fs::exists(before));
+  const RunRecord at = read_run_file(tmp), prior = read_run_file(before);
+  ASSERT_TRUE(at.checkpoint.has_value());
+  ASSERT_TRUE(prior.checkpoint.has_value());
+  const double t_at = at.checkpoint->state("state").t;
+  const double t_prior = prior.checkpoint->state("state").t;
+  EXPECT_GT(t_prior, 0.0);
+  EXPECT_LE(t_prior, t_at);
+  EXPECT_GE(prior.frames.size(), 2u);
+  // Resumed from the checkpoint before the failure with the default step limit: it completes.
+  fs::rename(before, tmp);
+  const Result resumed = sim(base + " --resume");
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  EXPECT_EQ(read_run_file(out.string()).meta.status, "complete");
+  EXPECT_FALSE(fs::exists(before));
+  // A failure before any checkpoint keeps only the failing state.
+  fs::remove(out);
+  const Result early = sim(base + " --force --set integrator.explicit_h_start=1e-9 "
+                                  "--set integrator.h_min=0.01 --set integrator.h_init=0.01");
+  ASSERT_EQ(early.code, 3) << early.err;
+  EXPECT_TRUE(fs::exists(tmp));
+  EXPECT_FALSE(fs::exists(before));
+  EXPECT_EQ(early.err.find("before the failure"), std::string::npos) << early.err;
+}
+
 TEST(Cli, VersionAndHelpFollowTheConventions) {
   // --version prints the program, its version and git revision on stdout and exits 0; --help
   // lists the files a run writes and the exit codes.
