@@ -1,6 +1,7 @@
 // Fold barrier (fold_barrier.hpp).
 #include "sim/contact/fold_barrier.hpp"
 
+#include "sim/model/barrier_function.hpp"
 #include "sim/model/hinge_geometry.hpp"
 
 #include <algorithm>
@@ -9,20 +10,6 @@
 namespace crumple {
 
 namespace {
-
-// E(psi) = K u^3 / (psi0^2 (psi + delta)), u = psi0 - psi, and its first two derivatives in
-// psi. delta = kDelta psi0 keeps everything finite at a complete fold (see the header).
-constexpr double kDelta = 0.02;
-
-struct Barrier {
-  double e, d1, d2;
-};
-
-Barrier barrier(double K, double psi0, double psi) {
-  const double u = psi0 - psi, c = K / (psi0 * psi0), q = psi + kDelta * psi0;
-  return {c * u * u * u / q, c * (-3.0 * u * u / q - u * u * u / (q * q)),
-          c * (6.0 * u / q + 6.0 * u * u / (q * q) + 2.0 * u * u * u / (q * q * q))};
-}
 
 double opening(double theta) { return M_PI - std::abs(theta); }
 
@@ -82,7 +69,7 @@ std::vector<std::pair<Index, double>> FoldBarrierTerm::near_complete_folds(const
 double FoldBarrierTerm::energy(const State& s) const {
   double e = 0;
   for (const auto& [h, theta] : near_complete_folds(s.x))
-    e += barrier(K_, psi0_[h], opening(theta)).e;
+    e += cubic_barrier(K_, psi0_[h], opening(theta)).e;
   return e;
 }
 
@@ -93,7 +80,7 @@ void FoldBarrierTerm::add_force(const State& s, VecX& f) const {
     Vec12 g;
     const double th = bend_angle_derivatives(node(s.x, nd[0]), node(s.x, nd[1]),
                                              node(s.x, nd[2]), node(s.x, nd[3]), g, nullptr);
-    const Barrier b = barrier(K_, psi0_[h], opening(th));
+    const BarrierValue b = cubic_barrier(K_, psi0_[h], opening(th));
     // F = -E' grad psi = E' sign(theta) grad theta
     const double w = b.d1 * (th >= 0 ? 1.0 : -1.0);
     for (int a = 0; a < 4; ++a) f.segment<3>(3 * nd[a]) += w * g.segment<3>(3 * a);
@@ -108,7 +95,7 @@ void FoldBarrierTerm::add_jacobians(const State& s, Jacobians& J) const {
     Mat12 H;
     const double th = bend_angle_derivatives(node(s.x, nd[0]), node(s.x, nd[1]),
                                              node(s.x, nd[2]), node(s.x, nd[3]), g, &H);
-    const Barrier b = barrier(K_, psi0_[h], opening(th));
+    const BarrierValue b = cubic_barrier(K_, psi0_[h], opening(th));
     const double sg = th >= 0 ? 1.0 : -1.0;
     Mat12 K = b.d2 * g * g.transpose() - (b.d1 * sg) * H;
     const auto& sl = slots_[h];

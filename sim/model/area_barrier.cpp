@@ -1,26 +1,14 @@
 // Area barrier (area_barrier.hpp).
 #include "sim/model/area_barrier.hpp"
 
+#include "sim/model/barrier_function.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
 namespace crumple {
 
 namespace {
-
-// E(q) = K u^3 / (q0^2 (q + delta)), u = q0 - q, and its first two derivatives in q; delta =
-// kDelta q0 keeps the energy finite at zero area (the fold barrier's form).
-constexpr double kDelta = 0.02;
-
-struct Barrier {
-  double e, d1, d2;
-};
-
-Barrier barrier(double K, double q0, double q) {
-  const double u = q0 - q, c = K / (q0 * q0), w = q + kDelta * q0;
-  return {c * u * u * u / w, c * (-3.0 * u * u / w - u * u * u / (w * w)),
-          c * (6.0 * u / w + 6.0 * u * u / (w * w) + 2.0 * u * u * u / (w * w * w))};
-}
 
 Mat3 cross_matrix(const Vec3& a) {
   Mat3 m;
@@ -80,7 +68,8 @@ std::vector<Index> AreaBarrierTerm::active_triangles(const VecX& x) const {
 
 double AreaBarrierTerm::energy(const State& s) const {
   double e = 0;
-  for (Index t : active_triangles(s.x)) e += barrier(K_[t], q0_, squared_area_ratio(s.x, t)).e;
+  for (Index t : active_triangles(s.x))
+    e += cubic_barrier(K_[t], q0_, squared_area_ratio(s.x, t)).e;
   return e;
 }
 
@@ -89,7 +78,7 @@ void AreaBarrierTerm::add_force(const State& s, VecX& f) const {
   for (Index t : active_triangles(s.x)) {
     const auto g = geometry(*mesh_, s.x, t);
     const double c = 1.0 / n0_sq_[t];
-    const Barrier b = barrier(K_[t], q0_, c * g.n.squaredNorm());
+    const BarrierValue b = cubic_barrier(K_[t], q0_, c * g.n.squaredNorm());
     // F_i = -E'(q) dq/dx_i = -E'(q) 2 c n x d_i
     for (int i = 0; i < 3; ++i)
       f.segment<3>(3 * mesh_->triangles[t][i]) -= (2.0 * c * b.d1) * g.n.cross(g.d[i]);
@@ -101,7 +90,7 @@ void AreaBarrierTerm::add_jacobians(const State& s, Jacobians& J) const {
   for (Index t : active_triangles(s.x)) {
     const auto g = geometry(*mesh_, s.x, t);
     const double c = 1.0 / n0_sq_[t];
-    const Barrier b = barrier(K_[t], q0_, c * g.n.squaredNorm());
+    const BarrierValue b = cubic_barrier(K_[t], q0_, c * g.n.squaredNorm());
     std::array<Vec3, 3> grad;
     std::array<Mat3, 3> D;
     for (int i = 0; i < 3; ++i) {

@@ -10,7 +10,7 @@
 // squared area ratio q = |n|^2 / |n0|^2 is a polynomial in the positions (smooth also at zero
 // area, where |n| is not), and
 //     E_t = K_t (q0 - q)^3 / (q0^2 (q + delta))   for q < q0, 0 otherwise,
-// the same C^2 barrier as the fold barrier's, with q0 = a0^2 (a0 the area ratio at which it
+// the same C^2 barrier as the fold barrier's (barrier_function.hpp), with q0 = a0^2 (a0 the area ratio at which it
 // starts, 1/2) and delta = 0.02 q0: E(0) = 50 K_t. K_t = ks l_t^2, l_t^2 the mean squared rest
 // edge of the triangle, makes a collapse cost some 100 times the energy of an edge stretched to
 // twice its length. The triangles of every kept run at Δ̃ >= 0.09 stayed above 0.77 of their
