@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -38,8 +39,10 @@ CreaseBand::CreaseBand(const MeshData& mesh, double width) : width_(width) {
   // Midpoints in square cells of side `cell`: every midpoint beside h lies within
   // reach = hypot(len / 2, w / 2) of h's midpoint, so the cells within ceil(reach / cell) hold them.
   const double cell = std::max(width, longest);
-  auto key = [](long i, long j) { return (static_cast<long long>(i) << 32) ^ (j & 0xffffffffLL); };
-  std::unordered_map<long long, std::vector<int>> grid;
+  auto key = [](long i, long j) {
+    return (static_cast<std::uint64_t>(i) << 32) ^ (static_cast<std::uint64_t>(j) & 0xffffffffULL);
+  };
+  std::unordered_map<std::uint64_t, std::vector<int>> grid;
   for (std::size_t h = 0; h < nh; ++h)
     grid[key(std::lround(std::floor(seg[h].mx / cell)), std::lround(std::floor(seg[h].my / cell)))]
         .push_back(static_cast<int>(h));
