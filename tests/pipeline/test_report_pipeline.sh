@@ -19,12 +19,16 @@ dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 
 # make_report FOLDER [VAR=VALUE ...]: the report rule of pipeline/reproduce.mk on FOLDER/runs,
-# writing FOLDER/results (a make of ours, not of whatever runs this test).
+# writing FOLDER/results (a make of ours, not of whatever runs this test). The synthetic runs
+# stand as they are (make -o): the preset's runs depend on their resolved configuration, which
+# these files, not made by crumple-sim, do not store.
 make_report() {
   local d="$1"
   shift
+  local stand=()
+  for s in 1 2 3; do stand+=(-o "$d/runs/seed$s.h5"); done
   env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS make report PRESET=tiny SEEDS="1 2 3" \
-    RUNDIR="$d/runs" RESULTS="$d/results" ANALYZE="$analyze" "$@"
+    RUNDIR="$d/runs" RESULTS="$d/results" ANALYZE="$analyze" "${stand[@]}" "$@"
 }
 
 # report FOLDER RUN_FLAGS: synthetic runs, their analyses and the whole report chain in FOLDER.
