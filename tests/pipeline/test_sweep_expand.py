@@ -175,12 +175,25 @@ class Expand(unittest.TestCase):
             self.assertEqual({p["seed"] for p in doc["points"]}, {7})
             self.assertEqual(len(doc["points"]), 4)
             part = {p["run"] for p in doc["points"]}
-            # The whole sweep later names the same run files for seed 7, so they are reused.
+            # Each group's ensemble depends on the list of its members, which names seed 7 only.
+            group = doc["points"][0]["group"]
+            ens = os.path.join(tmp, "res", "groups", group, "ensemble.json")
+            members = ens[:-len(".json")] + ".members"
+            self.assertEqual(read(members).split(),
+                             [p["analysis"] for p in doc["points"] if p["group"] == group])
+            self.assertIn(f"{members} | $(ANALYZE)", read(os.path.join(out, "points.mk")))
+            os.utime(members, (5, 5))
+            self.assertEqual(expand(GOOD, tmp, extra=["--seeds", "7"])[0].returncode, 0)
+            self.assertEqual(os.stat(members).st_mtime, 5)  # the same members: not rewritten
+            # The whole sweep later names the same run files for seed 7, so they are reused; the
+            # ensembles, made of seed 7 alone so far, are made again with both seeds.
             r, _, out = expand(GOOD, tmp)
             self.assertEqual(r.returncode, 0, r.stderr)
             doc = json.loads(read(os.path.join(out, "points.json")))
             self.assertEqual(len(doc["points"]), 8)
             self.assertTrue(part <= {p["run"] for p in doc["points"]})
+            self.assertEqual(len(read(members).split()), 2)
+            self.assertGreater(os.stat(members).st_mtime, 5)
             # A seed the sweep does not have is refused, nothing written.
             fresh = os.path.join(tmp, "other")
             os.makedirs(fresh)
@@ -219,7 +232,7 @@ class Expand(unittest.TestCase):
             self.assertIn("no report", r.stderr)
             doc = json.loads(read(os.path.join(out, "points.json")))
             for g in {p["group"] for p in doc["points"]}:
-                os.makedirs(os.path.join(res, "groups", g))
+                os.makedirs(os.path.join(res, "groups", g), exist_ok=True)
                 with open(os.path.join(res, "groups", g, "ensemble.json"), "w") as f:
                     json.dump({"seeds": [4, 7], "fits": {}, "stages": [], "threshold_sensitivity": {},
                                "runs": [], "cycles": [
