@@ -1,8 +1,8 @@
 // The hybrid integrator on small sheets (sim/integrate/integrator.hpp): energy conservation of
-// undamped explicit dynamics, monotone quasistatic relaxation, plastic flow with yield and
-// memory, implicit -> explicit -> implicit switching, step control (BDF growth limits, slow
-// Newton, interval ends), rejection of non-SPD steps, the NumericalFailure path, and bit-for-bit
-// resume from a stored history.
+// undamped explicit dynamics, monotone quasistatic relaxation, plastic flow with yield, memory
+// and re-yield when a crease is bent back, implicit -> explicit -> implicit switching, step
+// control (BDF growth limits, slow Newton, interval ends), rejection of non-SPD steps, the
+// NumericalFailure path, and bit-for-bit resume from a stored history.
 #include "sim/core/errors.hpp"
 #include "sim/integrate/bdf.hpp"
 #include "sim/integrate/integrator.hpp"
@@ -304,6 +304,71 @@ TEST(Integrator, PlasticFlowHasAYieldPointAndMemory) {
   model.bending().curvatures(s.x, c);
   std::printf("unloaded: c = %.4f, p = %.4f\n", c[0], s.p[0]);
   EXPECT_NEAR(s.p[0], p_loaded, 1e-3);
+  EXPECT_NEAR(c[0], s.p[0], 1e-3);
+}
+
+// Re-creasing: the yield band moves with p, so a crease bent back yields again after the same
+// change of curvature c0 as the flat sheet did, not at -c0 from flat, and a fold the other way
+// as deep as the first leaves a crease as deep (the flow law depends on c - p alone, paper
+// eq. 18; here through the coupled implicit integration of x and p).
+TEST(Integrator, PlasticFlowReYieldsAtTheSameBandWhenBentBack) {
+  const Mesh m = one_hinge();
+  ModelParams mp = params(1.0);
+  mp.kb = 0.05;
+  SheetModel model(m, mp);
+  auto st = no_switching(IntegrationMode::Implicit);
+  st.plastic_c0 = 0.2;
+  st.plastic_rate = 5.0;
+  Integrator integ(model, st);
+  State s = model.rest_state();
+  VecX c;
+  std::shared_ptr<AnchorTerm> hold;
+  double t = 0;
+  // Holds the hinge at curvature c (the bending term's sign: folded() by phi gives c < 0).
+  auto hold_at = [&](double curvature, double duration) {
+    if (hold) model.remove_term(hold.get());
+    hold = std::make_shared<AnchorTerm>(std::vector<Index>{0, 1, 2, 3},
+                                        folded(m, -2 * std::asin(curvature / 2)), 1e3);
+    model.add_term(hold, TermKind::External);
+    integ.advance_to(s, t += duration);
+    model.bending().curvatures(s.x, c);
+  };
+
+  hold_at(0.8, 20.0);  // the first crease, as in PlasticFlowHasAYieldPointAndMemory
+  const double c_first = c[0], p_first = s.p[0];
+  ASSERT_NEAR(c_first, 0.8, 0.01);
+  ASSERT_GT(p_first, 0.3);
+
+  // Bent back by 0.15 < c0 below the crease (still folded the first way): no flow at all.
+  hold_at(p_first - 0.15, 10.0);
+  EXPECT_NEAR(c[0], p_first - 0.15, 0.01);
+  // (p moves by ~1e-8 in the first steps, while c is still leaving the band's edge where the
+  // first hold had left it; a yield here would move it by ~0.1.)
+  std::printf("bent back by 0.15: p - p_first = %.3e\n", s.p[0] - p_first);
+  EXPECT_NEAR(s.p[0], p_first, 1e-6);
+
+  // Bent back through flat to -0.1: |c| < c0, which would not yield a flat sheet, but it lies
+  // |p| + 0.1 > c0 from the crease, so p flows back towards c and stops at the band's edge.
+  hold_at(-0.1, 20.0);
+  std::printf("first crease: c = %.4f, p = %.4f; bent back to c = %.4f: p = %.4f (c0 = 0.2)\n",
+              c_first, p_first, c[0], s.p[0]);
+  EXPECT_LT(s.p[0], p_first - 0.2);
+  EXPECT_GE(s.p[0] - c[0], 0.2 - 1e-9);
+  EXPECT_LT(s.p[0] - c[0], 0.3);
+
+  // Folded the other way as deep as the first time: the crease there is as deep as the first.
+  hold_at(-c_first, 20.0);
+  const double c_second = c[0], p_second = s.p[0];
+  std::printf("folded back: c = %.4f, p = %.4f\n", c_second, p_second);
+  EXPECT_LT(p_second * p_first, 0.0);
+  EXPECT_NEAR(-p_second, p_first, 0.02);
+  EXPECT_NEAR(p_second - c_second, c_first - p_first, 0.02);
+
+  // Released: the hinge springs back to the second crease, which persists.
+  model.remove_term(hold.get());
+  integ.advance_to(s, t + 40.0);
+  model.bending().curvatures(s.x, c);
+  EXPECT_NEAR(s.p[0], p_second, 1e-3);
   EXPECT_NEAR(c[0], s.p[0], 1e-3);
 }
 
