@@ -94,7 +94,7 @@ Params load_run(const Options& o, const std::string& tmp, RunRecord& rec,
   }
   rec = read_run_file(tmp);
   const Params stored = load_stored_config(rec.config, tmp + ":/config");
-  const std::vector<std::string> changes = resume_changes(stored, given, tmp);
+  const std::vector<std::string> changes = resume_changes(stored, given, tmp, rec.config);
   resume = checkpoint_to_resume(rec, given, tmp);
   ResumeRecord r;
   r.t = resume->state.t;
@@ -104,8 +104,9 @@ Params load_run(const Options& o, const std::string& tmp, RunRecord& rec,
   rec.resumes.push_back(r);
   if (!changes.empty()) {
     rec.config = resolved_yaml(resolved_for_mesh(given, rec.mesh));  // in force from here on
-    if (!o.quiet)
-      for (const auto& c : changes)
+    // A key the run started without is a warning (the physics may change here), not progress.
+    for (const auto& c : changes)
+      if (!o.quiet || c.find(": (absent") != std::string::npos)
         std::fprintf(stderr, "crumple-sim: on resume at t = %g s: %s\n", r.t, c.c_str());
   }
   return given;

@@ -265,6 +265,36 @@ TEST(Cli, NumericalFailureKeepsTheCheckpointBeforeIt) {
   EXPECT_EQ(early.err.find("before the failure"), std::string::npos) << early.err;
 }
 
+// A run started by an earlier program stores a configuration without the keys added since
+// (here material.area_barrier, removed from the stored text): the resume goes on, says that the
+// key now takes its value, records it in /resumes and stores the configuration in force.
+TEST(Cli, ResumeNamesKeysTheRunStartedWithout) {
+  const fs::path cfg = write("tiny.yaml", kTiny);
+  const fs::path out = kDir / "older.h5";
+  const std::string tmp = out.string() + ".tmp";
+  for (const auto& p : {out, fs::path(tmp), fs::path(out).replace_extension(".xdmf")}) fs::remove(p);
+  const std::string base = cfg.string() + " -o " + out.string() + " --threads 1 --quiet" +
+                           " --set integrator.explicit_h_start=1e-9";
+  ASSERT_EQ(sim(base + " --set integrator.h_min=0.01 --set integrator.h_init=0.01").code, 3);
+  RunRecord older = read_run_file(tmp);
+  const std::size_t key = older.config.find("  area_barrier:");
+  ASSERT_NE(key, std::string::npos) << older.config;
+  const std::size_t at = older.config.rfind('\n', key) + 1;  // the whole line, its indent too
+  older.config.erase(at, older.config.find('\n', at) + 1 - at);
+  write_run_file(tmp, older);
+
+  const Result resumed = sim(base + " --resume");
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  const std::string line =
+      "material.area_barrier: (absent: the run was started by a program without this key) -> true";
+  EXPECT_NE(resumed.err.find(line), std::string::npos) << resumed.err;
+  const RunRecord r = read_run_file(out.string());
+  ASSERT_EQ(r.resumes.size(), 1u);
+  const auto& c = r.resumes[0].changes;
+  EXPECT_NE(std::find(c.begin(), c.end(), line), c.end()) << (c.empty() ? "" : c[0]);
+  EXPECT_NE(r.config.find("area_barrier: true"), std::string::npos);
+}
+
 TEST(Cli, VersionAndHelpFollowTheConventions) {
   // --version prints the program, its version and git revision on stdout and exits 0; --help
   // lists the files a run writes and the exit codes.
