@@ -67,7 +67,7 @@ namespace {
 // The quantities averaged per cycle (stats.json "cycles" keys).
 const char* const kKeys[] = {"crease_length_L0", "crease_length_m", "new_crease_length_L0",
                              "perimeter_P", "dangling_fraction", "plastic_rotation_L0",
-                             "creased_rotation_share", "n_facets",
+                             "creased_rotation_share", "creased_hinge_share", "n_facets",
                              "n_single_triangle_facets", "single_triangle_fraction",
                              "new_length_share_after_compress", "a_fit", "a_moment", "a_univ",
                              "ks_distance", "ks_pvalue", "mean_area_x", "smallest_resolvable_xi",

@@ -201,6 +201,8 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt_given) {
   const double unit = run.length_unit_m;
   out.L0_m = sheet_size(mesh) * unit;
   out.area_m2 = sheet_area(mesh) * unit * unit;
+  out.hinge_length_L0 =
+      crease_length(mesh, std::vector<char>(mesh.hinges.size(), 1)) * unit / out.L0_m;
   const RunCompaction compaction = run_compaction(run.cycles);
   out.compaction = compaction.value;
   out.compaction_note = compaction.note;
@@ -255,6 +257,7 @@ RunAnalysis analyze_run(const RunData& run, const AnalyzeOptions& opt_given) {
     r.new_crease_length_m = crease_length(mesh, fresh) * unit;
     r.crease_length_L0 = r.crease_length_m / out.L0_m;
     r.new_crease_length_L0 = r.new_crease_length_m / out.L0_m;
+    if (out.hinge_length_L0 > 0) r.creased_hinge_share = r.crease_length_L0 / out.hinge_length_L0;
     const double rotation = plastic_rotation(mesh, c.p);
     r.plastic_rotation_L0 = rotation * unit / out.L0_m;
     if (rotation > 0) r.creased_rotation_share = plastic_rotation(mesh, c.p, &m.creased) / rotation;

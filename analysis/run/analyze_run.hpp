@@ -106,6 +106,10 @@ struct CycleResult {
   /// spreads a fold over more hinge rows keeps the first and lowers the second.
   double plastic_rotation_L0 = 0;
   std::optional<double> creased_rotation_share;
+  /// crease_length_L0 over RunAnalysis::hinge_length_L0: how full the mesh's hinge network is.
+  /// Where it nears the share at which most facets are single triangles, crease growth is
+  /// bounded by the mesh, not the sheet.
+  double creased_hinge_share = 0;
   std::vector<StageCreases> stages;  ///< per stage end of the cycle, lengths in L0
   std::optional<double> new_length_share_after_compress;  ///< see share_after_last()
   std::vector<FacetRecord> facets;
@@ -128,6 +132,8 @@ struct RunAnalysis {
   int close_px = 0;
   int image_width = 0, image_height = 0;
   double mean_triangle_area_m2 = 0;  ///< the mesh floor: creases cannot enclose less
+  /// The rest length of every hinge's edge over L0: the most crease length the mesh can hold.
+  double hinge_length_L0 = 0;
   double pixel_floor_m2 = 0;         ///< min_facet_px pixels
   double smallest_resolvable_m2 = 0; ///< the larger of the two floors
   double facet_floor_m2 = 0;         ///< floor of the truncated facet law (AnalyzeOptions)

@@ -110,6 +110,7 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
                 {"nodes", run.mesh.ref_positions.size()},
                 {"triangles", run.mesh.triangles.size()},
                 {"hinges", run.mesh.hinges.size()},
+                {"hinge_length_L0", res.hinge_length_L0},
                 {"image_width_px", res.image_width},
                 {"image_height_px", res.image_height},
                 {"px_per_m", res.px_per_m}};
@@ -133,6 +134,7 @@ nlohmann::json stats_json(const RunData& run, const RunAnalysis& res, const Anal
                          {"dangling_fraction", json_or_null(c.dangling_fraction)},
                          {"plastic_rotation_L0", c.plastic_rotation_L0},
                          {"creased_rotation_share", json_or_null(c.creased_rotation_share)},
+                         {"creased_hinge_share", c.creased_hinge_share},
                          {"stages", stages_json(c)},
                          {"new_length_share_after_compress",
                           json_or_null(c.new_length_share_after_compress)},

@@ -64,7 +64,10 @@ QUANTITIES = [("perimeter_P", "P (facet perimeters)", "L0"),
               # How much the sheet folded, whatever the threshold and however many hinge rows
               # carry a fold (analysis/creases/crease_edges.hpp), and the creases' share of it.
               ("plastic_rotation_L0", "plastic rotation (sum of fold angle x length)", "rad L0"),
-              ("creased_rotation_share", "creased share of the plastic rotation", "fraction")]
+              ("creased_rotation_share", "creased share of the plastic rotation", "fraction"),
+              # How full the mesh's hinge network is: near saturation the mesh, not the sheet,
+              # bounds the crease length (analysis/run/analyze_run.hpp).
+              ("creased_hinge_share", "creased share of the mesh's hinge length", "fraction")]
 ORDER_RANGE = (0.5, 4.0)
 ASSUMED_ORDER = 1.0
 PRESET_TOLERANCES = {"quick": 0.15, "paper": 0.05}

@@ -23,7 +23,7 @@ from common import die, load_ensemble, load_json, sweep_groups  # noqa: E402
 
 QUANTITIES = ("perimeter_P", "crease_length_L0", "new_crease_length_L0", "n_facets",
               "single_triangle_fraction", "a_fit", "dangling_fraction", "plastic_rotation_L0",
-              "creased_rotation_share", "a_univ",
+              "creased_rotation_share", "creased_hinge_share", "a_univ",
               "n_facets_above_floor", "a_fit_above_floor", "a_univ_above_floor")
 # Counts per group and cycle: runs tested and rejected by the KS tests of the whole-sample law and
 # of the law cut at the resolution floor, and runs whose fit above the floor measured a shape.

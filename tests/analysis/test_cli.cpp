@@ -206,6 +206,12 @@ TEST(CrumpleAnalyze, StagesThresholdRuleAndSensitivity) {
     EXPECT_NEAR(c[i]["plastic_rotation_L0"].get<double>(),
                 2.0 * (i + 1) * (std::asin(0.45) + std::asin(0.1)), 1e-9) << i;
     EXPECT_NEAR(c[i]["creased_rotation_share"].get<double>(), 1.0, 1e-12) << i;
+    // The 20 x 20 grid's interior hinges: 19 lines across in x and in y, and one diagonal of
+    // sqrt(2) / 20 L0 in each of the 400 cells.
+    const double network = 38.0 + 20.0 * std::sqrt(2.0);
+    EXPECT_NEAR(j["sheet"]["hinge_length_L0"].get<double>(), network, 1e-9);
+    EXPECT_NEAR(c[i]["creased_hinge_share"].get<double>(),
+                c[i]["crease_length_L0"].get<double>() / network, 1e-12) << i;
     EXPECT_TRUE(c[i]["n_single_triangle_facets"].is_number_integer());
     EXPECT_TRUE(c[i]["single_triangle_fraction"].is_number());
   }
