@@ -259,36 +259,61 @@ VecX folded(const Mesh& m, double phi) {
   return x;
 }
 
+// One hinge with the plastic law on (c0 = 0.2), held by a stiff anchor at a chosen curvature.
+struct PlasticHinge {
+  Mesh m = one_hinge();
+  SheetModel model{m, [] {
+                     ModelParams mp = params(1.0);
+                     mp.kb = 0.05;
+                     return mp;
+                   }()};
+  IntegratorSettings st = [] {
+    auto st = no_switching(IntegrationMode::Implicit);
+    st.plastic_c0 = 0.2;
+    st.plastic_rate = 5.0;
+    return st;
+  }();
+  Integrator integ{model, st};
+  State s = model.rest_state();
+  VecX c;  ///< the hinge's curvature after the last hold or release
+  std::shared_ptr<AnchorTerm> hold;
+  double t = 0;
+
+  /// Holds the hinge at curvature c for `duration` (the bending term's sign: folded() by a
+  /// positive angle gives c < 0).
+  void hold_at(double curvature, double duration) {
+    if (hold) model.remove_term(hold.get());
+    hold = std::make_shared<AnchorTerm>(std::vector<Index>{0, 1, 2, 3},
+                                        folded(m, -2 * std::asin(curvature / 2)), 1e3);
+    model.add_term(hold, TermKind::External);
+    advance(duration);
+  }
+  /// Lets the hinge go for `duration`.
+  void release(double duration) {
+    if (hold) model.remove_term(hold.get());
+    hold.reset();
+    advance(duration);
+  }
+  void advance(double duration) {
+    integ.advance_to(s, t += duration);
+    model.bending().curvatures(s.x, c);
+  }
+};
+
 }  // namespace
 
 TEST(Integrator, PlasticFlowHasAYieldPointAndMemory) {
-  const Mesh m = one_hinge();
-  ModelParams mp = params(1.0);
-  mp.kb = 0.05;
-  SheetModel model(m, mp);
-  auto st = no_switching(IntegrationMode::Implicit);
-  st.plastic_c0 = 0.2;
-  st.plastic_rate = 5.0;
-  Integrator integ(model, st);
-  State s = model.rest_state();
-  VecX c;
+  PlasticHinge h;
+  const auto& s = h.s;
+  const auto& c = h.c;
 
-  // Held at c = 0.15 < c0: no flow at all.
-  auto hold = std::make_shared<AnchorTerm>(std::vector<Index>{0, 1, 2, 3},
-                                           folded(m, 2 * std::asin(0.075)), 1e3);
-  model.add_term(hold, TermKind::External);
-  integ.advance_to(s, 5.0);
-  model.bending().curvatures(s.x, c);
+  // Held at c = -0.15, |c| < c0: no flow at all.
+  h.hold_at(-0.15, 5.0);
   EXPECT_NEAR(std::abs(c[0]), 0.15, 0.01);
   EXPECT_EQ(s.p[0], 0.0);
 
-  // Held at c = 0.8: p flows towards c, never beyond the yield band edge.
-  model.remove_term(hold.get());
-  hold = std::make_shared<AnchorTerm>(std::vector<Index>{0, 1, 2, 3},
-                                      folded(m, 2 * std::asin(0.4)), 1e3);
-  model.add_term(hold, TermKind::External);
-  integ.advance_to(s, 20.0);
-  model.bending().curvatures(s.x, c);
+  // Held at c = -0.8: p flows towards c, never beyond the yield band edge.
+  h.hold_at(-0.8, 15.0);
   const double p_loaded = s.p[0];
   std::printf("loaded: c = %.4f, p = %.4f (c0 = 0.2)\n", c[0], p_loaded);
   EXPECT_GT(std::abs(p_loaded), 0.3);
@@ -299,9 +324,7 @@ TEST(Integrator, PlasticFlowHasAYieldPointAndMemory) {
   EXPECT_GE(std::abs(c[0] - p_loaded), 0.2 - 1e-9);
 
   // Unloaded: the hinge springs back to its new rest curvature, and p persists.
-  model.remove_term(hold.get());
-  integ.advance_to(s, 60.0);
-  model.bending().curvatures(s.x, c);
+  h.release(40.0);
   std::printf("unloaded: c = %.4f, p = %.4f\n", c[0], s.p[0]);
   EXPECT_NEAR(s.p[0], p_loaded, 1e-3);
   EXPECT_NEAR(c[0], s.p[0], 1e-3);
@@ -312,35 +335,17 @@ TEST(Integrator, PlasticFlowHasAYieldPointAndMemory) {
 // as deep as the first leaves a crease as deep (the flow law depends on c - p alone, paper
 // eq. 18; here through the coupled implicit integration of x and p).
 TEST(Integrator, PlasticFlowReYieldsAtTheSameBandWhenBentBack) {
-  const Mesh m = one_hinge();
-  ModelParams mp = params(1.0);
-  mp.kb = 0.05;
-  SheetModel model(m, mp);
-  auto st = no_switching(IntegrationMode::Implicit);
-  st.plastic_c0 = 0.2;
-  st.plastic_rate = 5.0;
-  Integrator integ(model, st);
-  State s = model.rest_state();
-  VecX c;
-  std::shared_ptr<AnchorTerm> hold;
-  double t = 0;
-  // Holds the hinge at curvature c (the bending term's sign: folded() by phi gives c < 0).
-  auto hold_at = [&](double curvature, double duration) {
-    if (hold) model.remove_term(hold.get());
-    hold = std::make_shared<AnchorTerm>(std::vector<Index>{0, 1, 2, 3},
-                                        folded(m, -2 * std::asin(curvature / 2)), 1e3);
-    model.add_term(hold, TermKind::External);
-    integ.advance_to(s, t += duration);
-    model.bending().curvatures(s.x, c);
-  };
+  PlasticHinge h;
+  const auto& s = h.s;
+  const auto& c = h.c;
 
-  hold_at(0.8, 20.0);  // the first crease, as in PlasticFlowHasAYieldPointAndMemory
+  h.hold_at(0.8, 20.0);  // the first crease, as in PlasticFlowHasAYieldPointAndMemory
   const double c_first = c[0], p_first = s.p[0];
   ASSERT_NEAR(c_first, 0.8, 0.01);
   ASSERT_GT(p_first, 0.3);
 
   // Bent back by 0.15 < c0 below the crease (still folded the first way): no flow at all.
-  hold_at(p_first - 0.15, 10.0);
+  h.hold_at(p_first - 0.15, 10.0);
   EXPECT_NEAR(c[0], p_first - 0.15, 0.01);
   // (p moves by ~1e-8 in the first steps, while c is still leaving the band's edge where the
   // first hold had left it; a yield here would move it by ~0.1.)
@@ -349,7 +354,7 @@ TEST(Integrator, PlasticFlowReYieldsAtTheSameBandWhenBentBack) {
 
   // Bent back through flat to -0.1: |c| < c0, which would not yield a flat sheet, but it lies
   // |p| + 0.1 > c0 from the crease, so p flows back towards c and stops at the band's edge.
-  hold_at(-0.1, 20.0);
+  h.hold_at(-0.1, 20.0);
   std::printf("first crease: c = %.4f, p = %.4f; bent back to c = %.4f: p = %.4f (c0 = 0.2)\n",
               c_first, p_first, c[0], s.p[0]);
   EXPECT_LT(s.p[0], p_first - 0.2);
@@ -357,7 +362,7 @@ TEST(Integrator, PlasticFlowReYieldsAtTheSameBandWhenBentBack) {
   EXPECT_LT(s.p[0] - c[0], 0.3);
 
   // Folded the other way as deep as the first time: the crease there is as deep as the first.
-  hold_at(-c_first, 20.0);
+  h.hold_at(-c_first, 20.0);
   const double c_second = c[0], p_second = s.p[0];
   std::printf("folded back: c = %.4f, p = %.4f\n", c_second, p_second);
   EXPECT_LT(p_second * p_first, 0.0);
@@ -365,9 +370,7 @@ TEST(Integrator, PlasticFlowReYieldsAtTheSameBandWhenBentBack) {
   EXPECT_NEAR(p_second - c_second, c_first - p_first, 0.02);
 
   // Released: the hinge springs back to the second crease, which persists.
-  model.remove_term(hold.get());
-  integ.advance_to(s, t + 40.0);
-  model.bending().curvatures(s.x, c);
+  h.release(40.0);
   EXPECT_NEAR(s.p[0], p_second, 1e-3);
   EXPECT_NEAR(c[0], s.p[0], 1e-3);
 }
