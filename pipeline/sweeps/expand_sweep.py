@@ -323,8 +323,10 @@ def make_rules(sweep, pts, out_dir, results, resolved):
         # an edit of the protocol that a sweep's settings override leaves its runs standing.
         # Without the simulator to resolve it, on the protocol file.
         config = f"{p['run']}.config" if p["run"] in resolved else sweep["protocol"]
+        # A resumed run appends to its log: the earlier pieces' lines (their walls, a stop or a
+        # failure) stay with the run.
         lines += [f"{p['run']}: {p['run']}.args {config} | $(SIM)",
-                  f"\t$(SIM) {args} -o $@ $(if $(wildcard $@.tmp),--resume,--force) > $@.log 2>&1 "
+                  f"\t$(SIM) {args} -o $@ $(if $(wildcard $@.tmp),--resume >>,--force >) $@.log 2>&1 "
                   f"|| {{ echo \"run failed: $@ (see $@.log):\"; tail -n 5 $@.log; exit 1; }}",
                   f"{p['analysis']}/stats.json: {p['run']} {p['analysis']}.args | $(ANALYZE)",
                   f"\t$(ANALYZE) $< -o {p['analysis']} "

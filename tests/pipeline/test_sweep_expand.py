@@ -81,6 +81,32 @@ class Expand(unittest.TestCase):
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertNotEqual(os.stat(args).st_mtime, 1)
 
+    def test_a_resumed_run_appends_to_its_log(self):
+        # A stand-in simulator that stops with a checkpoint the first time and completes the
+        # second, saying which way it was started: both pieces stay in the run's log.
+        with tempfile.TemporaryDirectory() as tmp:
+            r, _, out = expand(GOOD, tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            run = json.loads(read(os.path.join(out, "points.json")))["points"][0]["run"]
+            fake = os.path.join(tmp, "fake-sim")
+            with open(fake, "w") as f:
+                f.write('#!/bin/sh\nout=""; how=""\n'
+                        'while [ $# -gt 0 ]; do case "$1" in -o) out="$2"; shift;; '
+                        '--resume|--force) how="$1";; esac; shift; done\n'
+                        'echo "piece started with $how" >&2\n'
+                        'if [ -e "$out.tmp" ]; then : > "$out"; rm "$out.tmp"; exit 0; fi\n'
+                        ': > "$out.tmp"; exit 143\n')
+            os.chmod(fake, 0o755)
+            make = ["make", "--no-print-directory", "-f", os.path.join(out, "points.mk"),
+                    "SIM=" + fake, "ANALYZE=" + fake, run]
+            first = subprocess.run(make, cwd=REPO, capture_output=True, text=True)
+            self.assertNotEqual(first.returncode, 0)
+            self.assertTrue(os.path.exists(run + ".tmp"))
+            second = subprocess.run(make, cwd=REPO, capture_output=True, text=True)
+            self.assertEqual(second.returncode, 0, second.stdout + second.stderr)
+            self.assertEqual(read(run + ".log"),
+                             "piece started with --force\npiece started with --resume\n")
+
     def test_runs_depend_on_their_resolved_configuration_not_the_protocol_file(self):
         import h5py
         with tempfile.TemporaryDirectory() as tmp:
