@@ -94,19 +94,23 @@ Params load_run(const Options& o, const std::string& tmp, RunRecord& rec,
   }
   rec = read_run_file(tmp);
   const Params stored = load_stored_config(rec.config, tmp + ":/config");
-  const std::vector<std::string> changes = resume_changes(stored, given, tmp, rec.config);
+  const std::vector<std::string> changes = resume_changes(stored, given, tmp);
+  // Keys the run started without may change the physics from here on: always said.
+  const std::vector<std::string> added = keys_added_since(rec.config, given);
   resume = checkpoint_to_resume(rec, given, tmp);
   ResumeRecord r;
   r.t = resume->state.t;
   r.time = utc_now();
   r.threads = o.threads > 0 ? o.threads : omp_get_max_threads();
-  r.changes = changes;
+  r.changes = added;
+  r.changes.insert(r.changes.end(), changes.begin(), changes.end());
   rec.resumes.push_back(r);
-  if (!changes.empty()) {
+  if (!r.changes.empty()) {
     rec.config = resolved_yaml(resolved_for_mesh(given, rec.mesh));  // in force from here on
-    // A key the run started without is a warning (the physics may change here), not progress.
-    for (const auto& c : changes)
-      if (!o.quiet || c.find(": (absent") != std::string::npos)
+    for (const auto& c : added)
+      std::fprintf(stderr, "crumple-sim: on resume at t = %g s: %s\n", r.t, c.c_str());
+    if (!o.quiet)
+      for (const auto& c : changes)
         std::fprintf(stderr, "crumple-sim: on resume at t = %g s: %s\n", r.t, c.c_str());
   }
   return given;

@@ -49,22 +49,25 @@ std::map<std::string, std::string> keys_of(const Params& p) {
 
 }  // namespace
 
+std::vector<std::string> keys_added_since(const std::string& stored_text, const Params& given) {
+  // A run file stores every key resolved, so a key missing from its text was added to the
+  // program after the run started: parsed, it took its default, which need not be what the
+  // earlier program did (material.area_barrier is on by default; before it, nothing held a
+  // triangle's area).
+  std::map<std::string, std::string> present;
+  flatten(YAML::Load(stored_text), "", present);
+  std::vector<std::string> added;
+  for (const auto& [key, value] : keys_of(given))
+    if (!present.count(key))
+      added.push_back(key + ": (absent: the run was started by a program without this key) -> " +
+                      value);
+  return added;
+}
+
 std::vector<std::string> resume_changes(const Params& stored, const Params& given,
-                                        const std::string& tmp, const std::string& stored_text) {
+                                        const std::string& tmp) {
   const auto a = keys_of(stored), b = keys_of(given);
   std::vector<std::string> changes, refused;
-  // A run file stores every key resolved, so a key missing from its text was added to the
-  // program after the run started: it parsed to its default above, which need not be what the
-  // earlier program did (material.area_barrier is on by default; before it, nothing held a
-  // triangle's area). It may act from here on; say so and record it.
-  if (!stored_text.empty()) {
-    std::map<std::string, std::string> present;
-    flatten(YAML::Load(stored_text), "", present);
-    for (const auto& [key, value] : b)
-      if (!present.count(key))
-        changes.push_back(key + ": (absent: the run was started by a program without this key) -> " +
-                          value);
-  }
   for (const auto& [key, old_value] : a) {
     const auto it = b.find(key);
     const std::string new_value = it == b.end() ? "(absent)" : it->second;

@@ -16,12 +16,14 @@ namespace crumple {
 
 /// The keys whose values differ between `stored` (the run's configuration) and `given` (the
 /// command line's), as "key: OLD -> NEW", if all of them are resumable; otherwise an InputError
-/// naming `tmp`, where each offending new value was set, and both values. With `stored_text`
-/// (the run file's /config as stored), also the keys it lacks, which the program gained after
-/// the run started and which now take their given value: "key: (absent: ...) -> NEW".
+/// naming `tmp`, where each offending new value was set, and both values.
 std::vector<std::string> resume_changes(const Params& stored, const Params& given,
-                                        const std::string& tmp,
-                                        const std::string& stored_text = "");
+                                        const std::string& tmp);
+
+/// The keys of `given` that `stored_text` (a run file's /config as stored) lacks: the program
+/// gained them after the run started, and they take their given value from the checkpoint on,
+/// as "key: (absent: ...) -> NEW".
+std::vector<std::string> keys_added_since(const std::string& stored_text, const Params& given);
 
 /// The stored checkpoint, checked against the protocol of `p` (cycle and stage in range) and
 /// its integrator history against the mesh (vector lengths); InputError naming `tmp` and the
