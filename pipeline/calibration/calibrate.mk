@@ -45,6 +45,8 @@ $(CAL_OUT)/FOLD_CALIBRATION.md: $(CAL_RUNS) pipeline/calibration/fold_calibratio
 # degrees; resumable) and finds the radius at which P after cycle 1 meets the experiments' law
 # (pipeline/calibration/yield_calibration.py): results/yield_radius_calibration_flat_unfold/
 # CALIBRATION.md, calibration.json, .csv and the figure. About 15 minutes on 2 cores.
+# CALIBRATE_SWEEP=yield_radius_calibration_flat_unfold_6000 makes it on 6000 nodes (about 35
+# minutes on 2 cores; docs/studies/yield_radius_calibration_flat_unfold_6000/),
 # CALIBRATE_SWEEP=yield_radius_calibration redoes the calibration at the former unfold
 # (flatten_length 0.05, docs/studies/yield_radius_calibration/), CALIBRATE_SWEEP=yield_calibration
 # the older one of a yield angle at 1500 nodes (docs/studies/yield_calibration/).
