@@ -107,11 +107,12 @@ Params load_run(const Options& o, const std::string& tmp, RunRecord& rec,
   rec.resumes.push_back(r);
   if (!r.changes.empty()) {
     rec.config = resolved_yaml(resolved_for_mesh(given, rec.mesh));  // in force from here on
-    for (const auto& c : added)
-      std::fprintf(stderr, "crumple-sim: on resume at t = %g s: %s\n", r.t, c.c_str());
-    if (!o.quiet)
-      for (const auto& c : changes)
+    const auto say = [&](const std::vector<std::string>& lines) {
+      for (const auto& c : lines)
         std::fprintf(stderr, "crumple-sim: on resume at t = %g s: %s\n", r.t, c.c_str());
+    };
+    say(added);
+    if (!o.quiet) say(changes);
   }
   return given;
 }

@@ -411,6 +411,8 @@ class Expand(unittest.TestCase):
         # The shipped sweeps name keys, presets and protocol files that later changes can rename
         # or remove; a sweep that no longer resolves would be found only when someone next runs
         # it. Expanding each with --sim resolves every point's configuration (seconds in all).
+        # Expanded where it lies, not through expand(), which copies the text elsewhere: a sweep
+        # of another's runs (runs_of) finds that sweep beside its own file.
         folder = os.path.join(REPO, "pipeline", "sweeps")
         names = sorted(f[:-5] for f in os.listdir(folder) if f.endswith(".yaml"))
         self.assertIn("convergence_flat_unfold", names)
