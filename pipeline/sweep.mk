@@ -5,7 +5,8 @@
 # The points are expanded (and each group's configuration checked by crumple-sim) into
 # runs/sweeps/NAME/points.mk, which a second make reads: a finished run is never redone, a
 # killed one (RUN.h5.tmp holds its checkpoint) resumes, `-j` runs points side by side, and a
-# point whose arguments changed (its RUN.h5.args) is run again. Run logs: RUN.h5.log.
+# point whose arguments changed (its RUN.h5.args) is run again, or extended when the change is
+# more cycles and nothing else (crumple-sim --extend). Run logs: RUN.h5.log.
 SWEEP ?=
 SWEEP_FILE    = pipeline/sweeps/$(SWEEP).yaml
 SWEEP_DIR     = runs/sweeps/$(SWEEP)

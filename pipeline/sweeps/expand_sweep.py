@@ -324,9 +324,18 @@ def make_rules(sweep, pts, out_dir, results, resolved):
         # Without the simulator to resolve it, on the protocol file.
         config = f"{p['run']}.config" if p["run"] in resolved else sweep["protocol"]
         # A resumed run appends to its log: the earlier pieces' lines (their walls, a stop or a
-        # failure) stay with the run.
+        # failure) stay with the run. A finished run made again (its arguments changed) is first
+        # offered to --extend, which takes it only when the change is more cycles and nothing
+        # else (exit 2 otherwise, the file untouched): then it is run afresh. Any other failure
+        # of the extension (a numerical one, a stop) keeps its checkpoint for --resume.
+        # (In the shell, not make's $(if): an argument may hold a comma.)
+        sim = f"$(SIM) {args} -o $@"
+        how = (f"if [ -e $@.tmp ]; then {sim} --resume >> $@.log 2>&1; "
+               f"elif [ -e $@ ]; then {sim} --extend >> $@.log 2>&1 "
+               f"|| {{ test $$? = 2 && {sim} --force > $@.log 2>&1; }}; "
+               f"else {sim} --force > $@.log 2>&1; fi")
         lines += [f"{p['run']}: {p['run']}.args {config} | $(SIM)",
-                  f"\t$(SIM) {args} -o $@ $(if $(wildcard $@.tmp),--resume >>,--force >) $@.log 2>&1 "
+                  f"\t{how} "
                   f"|| {{ echo \"run failed: $@ (see $@.log):\"; tail -n 5 $@.log; exit 1; }}",
                   f"{p['analysis']}/stats.json: {p['run']} {p['analysis']}.args | $(ANALYZE)",
                   f"\t$(ANALYZE) $< -o {p['analysis']} "

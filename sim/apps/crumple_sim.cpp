@@ -1,7 +1,7 @@
 // crumple-sim: runs a protocol on a sheet and writes the run file (README.md, "Running the
 // simulator"; keys in docs/CONFIG.md, file layout in docs/FILE_FORMAT.md).
 //   crumple-sim CONFIG.yaml -o RUN.h5 [--seed S] [--threads N] [--set key=value]...
-//               [--resume | --force] [--quiet] [--list-stages]
+//               [--resume | --extend | --force] [--quiet] [--list-stages]
 // Exit codes: 0 done, 2 bad input (nothing written), 3 numerical failure (checkpoint kept in
 // RUN.h5.tmp; rerun with --resume), 128 + N stopped by signal N after a checkpoint, 1 anything
 // else (a write failure among them: the last checkpoint is kept).
@@ -47,7 +47,8 @@ struct Options {
   std::optional<std::int64_t> seed;
   int threads = 0;
   std::vector<std::string> sets;
-  bool resume = false, force = false, quiet = false, list = false, print_config = false;
+  bool resume = false, extend = false, force = false, quiet = false, list = false;
+  bool print_config = false;
   bool list_keys = false, markdown = false;
 };
 
@@ -76,8 +77,8 @@ void validate_protocol(const Params& p, const StageRegistry& registry) {
 }
 
 /// The configuration of this process: the command line's, checked against the checkpoint's
-/// when resuming (resume.hpp); `rec` receives the checkpointed record and `resume` its
-/// checkpoint, if any.
+/// when resuming or extending (resume.hpp); `rec` receives the record the run goes on from
+/// (RUN.h5.tmp's, or for --extend the complete RUN.h5's) and `resume` its checkpoint, if any.
 Params load_run(const Options& o, const std::string& tmp, RunRecord& rec,
                 std::optional<Checkpoint>& resume) {
   namespace fs = std::filesystem;
@@ -86,30 +87,41 @@ Params load_run(const Options& o, const std::string& tmp, RunRecord& rec,
     given.mesh.seed = static_cast<std::uint64_t>(*o.seed);
     given.origins["mesh.seed"] = "--seed " + std::to_string(*o.seed);
   }
-  if (!(o.resume && fs::exists(tmp))) {
+  if (o.extend) {
+    // Checked here, before the run file is read: what is pending or missing decides the error.
+    if (fs::exists(tmp))
+      throw InputError(tmp + ": holds the checkpoint of an unfinished run (an extension "
+                             "stopped?); pass --resume to continue it");
+    if (!fs::exists(o.output))
+      throw InputError("-o " + o.output + ": --extend needs the complete run there; none");
+  } else if (!(o.resume && fs::exists(tmp))) {
     if (o.resume && !o.quiet)
       std::fprintf(stderr, "crumple-sim: nothing to resume (%s absent): starting afresh\n",
                    tmp.c_str());
     return given;
   }
-  rec = read_run_file(tmp);
-  const Params stored = load_stored_config(rec.config, tmp + ":/config");
-  const std::vector<std::string> changes = resume_changes(stored, given, tmp);
+  const std::string source = o.extend ? o.output : tmp;
+  rec = read_run_file(source);
+  const Params stored = load_stored_config(rec.config, source + ":/config");
+  const std::vector<std::string> changes = resume_changes(stored, given, source, o.extend);
   // Keys the run started without may change the physics from here on: always said.
   const std::vector<std::string> added = keys_added_since(rec.config, given);
-  resume = checkpoint_to_resume(rec, given, tmp);
+  resume = o.extend ? checkpoint_to_extend(rec, stored, given, source)
+                    : checkpoint_to_resume(rec, given, source);
   ResumeRecord r;
   r.t = resume->state.t;
   r.time = utc_now();
   r.threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  r.program_before = rec.meta.program_version + " (" + rec.meta.git_revision + ")";
   r.changes = added;
   r.changes.insert(r.changes.end(), changes.begin(), changes.end());
   rec.resumes.push_back(r);
   if (!r.changes.empty()) {
     rec.config = resolved_yaml(resolved_for_mesh(given, rec.mesh));  // in force from here on
+    const char* how = o.extend ? "on extension" : "on resume";
     const auto say = [&](const std::vector<std::string>& lines) {
       for (const auto& c : lines)
-        std::fprintf(stderr, "crumple-sim: on resume at t = %g s: %s\n", r.t, c.c_str());
+        std::fprintf(stderr, "crumple-sim: %s at t = %g s: %s\n", how, r.t, c.c_str());
     };
     say(added);
     if (!o.quiet) say(changes);
@@ -211,7 +223,8 @@ int run(const Options& o) {
   const Params given = load_run(o, tmp, rec, resume_from);
   const auto& registry = StageRegistry::builtin();
   validate_protocol(given, registry);
-  const OutputPaths paths = check_output_paths(o.output, given.output.xdmf, o.resume, o.force);
+  const OutputPaths paths =
+      check_output_paths(o.output, given.output.xdmf, o.resume, o.force, o.extend);
 
   if (o.threads > 0) omp_set_num_threads(o.threads);
   if (!resume_from) {
@@ -300,6 +313,10 @@ int main(int argc, char** argv) {
   app.add_flag("--resume", o.resume,
                "continue a stopped run from RUN.h5.tmp; the configuration must be the run's, "
                "except integrator tolerances, step limits and output intervals");
+  app.add_flag("--extend", o.extend,
+               "continue the complete run RUN.h5 to the larger protocol.cycles given, from the "
+               "state after its last cycle; the configuration must otherwise be the run's (as "
+               "for --resume). RUN.h5 stays as it was until the longer run completes");
   app.add_flag("--force", o.force,
                "replace an existing RUN.h5 (and its .xdmf sidecars) and discard a pending RUN.h5.tmp");
   app.add_flag("--quiet", o.quiet, "no progress output");
@@ -335,8 +352,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "crumple-sim: usage: crumple-sim CONFIG.yaml -o RUN.h5 [options]\n");
     return kExitBadInput;
   }
-  if (o.resume && o.force) {
-    std::fprintf(stderr, "crumple-sim: --resume and --force contradict each other\n");
+  if (int(o.resume) + int(o.extend) + int(o.force) > 1) {
+    std::fprintf(stderr, "crumple-sim: --resume, --extend and --force contradict each other\n");
     return kExitBadInput;
   }
   namespace fs = std::filesystem;

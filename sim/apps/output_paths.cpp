@@ -49,7 +49,8 @@ void writable_directory(const std::string& run) {
 }
 }  // namespace
 
-OutputPaths check_output_paths(const std::string& run, bool xdmf, bool resume, bool force) {
+OutputPaths check_output_paths(const std::string& run, bool xdmf, bool resume, bool force,
+                               bool extend) {
   OutputPaths out;
   out.run = run;
   out.tmp = run + ".tmp";
@@ -69,10 +70,13 @@ OutputPaths check_output_paths(const std::string& run, bool xdmf, bool resume, b
   }
   writable_directory(run);
   std::error_code ec;
-  if (!force && fs::exists(out.run, ec))
+  // A pending checkpoint continued with --resume replaces the run file at its end, as the run
+  // that wrote it (started with --force or --extend while the file was there) was to.
+  const bool replaces = force || extend || (resume && fs::exists(out.tmp, ec));
+  if (!replaces && fs::exists(out.run, ec))
     throw InputError("-o " + run + ": exists; pass --force to replace it");
   for (const std::string& sidecar : {out.xdmf, out.xdmf_cycles})
-    if (!force && xdmf && fs::exists(sidecar, ec))
+    if (!replaces && xdmf && fs::exists(sidecar, ec))
       throw InputError("-o " + run + ": the XDMF sidecar " + sidecar +
                        " exists; pass --force to replace it");
   if (!force && !resume && fs::exists(out.tmp, ec))

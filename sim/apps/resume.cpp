@@ -65,7 +65,7 @@ std::vector<std::string> keys_added_since(const std::string& stored_text, const 
 }
 
 std::vector<std::string> resume_changes(const Params& stored, const Params& given,
-                                        const std::string& tmp) {
+                                        const std::string& source, bool extending) {
   const auto a = keys_of(stored), b = keys_of(given);
   std::vector<std::string> changes, refused;
   for (const auto& [key, old_value] : a) {
@@ -74,18 +74,34 @@ std::vector<std::string> resume_changes(const Params& stored, const Params& give
     if (new_value == old_value) continue;
     const std::string line = key + ": " + old_value + " -> " + new_value;
     const schema::Key* spec = find_key(key);
+    if (extending && key == "protocol.cycles") {
+      if (given.protocol.cycles > stored.protocol.cycles)
+        changes.push_back(line);
+      else
+        refused.push_back(given.where(key) + ": " + new_value + " given, but --extend needs more "
+                          "than the run's " + old_value + " cycles");
+      continue;
+    }
     if (spec && spec->resumable)
       changes.push_back(line);
     else
       refused.push_back(given.where(key) + ": " + old_value + " in the run, " + new_value +
                         " given");
   }
+  if (extending && given.protocol.cycles <= stored.protocol.cycles &&
+      a.at("protocol.cycles") == b.at("protocol.cycles"))
+    refused.push_back(given.where("protocol.cycles") + ": " +
+                      std::to_string(given.protocol.cycles) + ", the run's own; --extend needs "
+                      "more (e.g. --set protocol.cycles=" +
+                      std::to_string(stored.protocol.cycles + 1) + ")");
   if (!refused.empty()) {
-    std::string msg = tmp + ": --resume: the configuration given differs from the run's where it "
-                            "cannot change on resume:";
+    const std::string flag = extending ? "--extend" : "--resume";
+    std::string msg = source + ": " + flag + ": the configuration given differs from the run's "
+                      "where it cannot change on " + (extending ? "extension:" : "resume:");
     for (const auto& r : refused) msg += "\n  " + r;
-    msg += "\n(only integrator tolerances and step limits and the output intervals may change; "
-           "the run's configuration is " + tmp + ":/config; --force starts the run afresh)";
+    msg += std::string("\n(only ") + (extending ? "protocol.cycles (upward), " : "") +
+           "integrator tolerances and step limits and the output intervals may change; the "
+           "run's configuration is " + source + ":/config; --force starts the run afresh)";
     throw InputError(msg);
   }
   return changes;
@@ -117,6 +133,26 @@ Checkpoint checkpoint_to_resume(const RunRecord& rec, const Params& p, const std
     fail("/checkpoint/stepper: unknown integration mode");
   if (!(h.h > 0) || !std::isfinite(h.h)) fail("/checkpoint/stepper: step size not positive");
   return c;
+}
+
+Checkpoint checkpoint_to_extend(RunRecord& rec, const Params& stored, const Params& given,
+                                const std::string& path) {
+  const auto fail = [&](const std::string& what) { throw InputError(path + ": --extend: " + what); };
+  if (rec.meta.status != "complete")
+    fail("/meta@status is '" + rec.meta.status + "'; only a run that completed all its cycles "
+         "can be extended");
+  if (!rec.checkpoint) fail("/checkpoint: missing (written by a program without it?)");
+  const Checkpoint end = load_checkpoint(*rec.checkpoint);
+  if (end.cycle != stored.protocol.cycles + 1 || end.stage != 0 || end.in_stage)
+    fail("/checkpoint is not the end of cycle " + std::to_string(stored.protocol.cycles));
+  // The runner's closing frame: added when the run's end was off the frame grid, which a longer
+  // run never has there (same test and slack as ProtocolRunner::run).
+  constexpr double kEps = 1e-12;
+  const double t_end = end.state.t;
+  if (!rec.frames.empty() && rec.frames.back().state.t == t_end &&
+      t_end > end.next_frame_t - stored.output.dt + kEps)
+    rec.frames.pop_back();
+  return checkpoint_to_resume(rec, given, path);
 }
 
 }  // namespace crumple

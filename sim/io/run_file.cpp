@@ -465,6 +465,7 @@ void write_all(H5::H5File& file, const RunRecord& r) {
     std::string changes;
     for (const auto& c : e.changes) changes += c + "\n";
     h5::attr(g, "changes", changes);
+    if (!e.program_before.empty()) h5::attr(g, "program_before", e.program_before);
   }
 }
 }  // namespace
@@ -578,6 +579,7 @@ RunRecord read_run_file(const std::string& path) {
         std::istringstream lines(h5::attr_string(g, "changes"));
         for (std::string line; std::getline(lines, line);)
           if (!line.empty()) e.changes.push_back(line);
+        if (g.attrExists("program_before")) e.program_before = h5::attr_string(g, "program_before");
         r.resumes.push_back(std::move(e));
       }
     }

@@ -84,6 +84,9 @@ struct ResumeRecord {
   std::string time;    ///< UTC wall-clock time of the resume
   int threads = 1;
   std::vector<std::string> changes;
+  /// The program that ran the run up to here (version and git revision; /meta names the last
+  /// piece's); empty in files written before it was recorded.
+  std::string program_before;
 };
 
 struct RunRecord {

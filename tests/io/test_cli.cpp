@@ -92,13 +92,19 @@ TEST(Cli, BadInputExitsTwoAndWritesNothing) {
 }
 
 namespace {
-// Starts the tiny run to `out`, sends `signo` once it has written a checkpoint, and returns the
-// wait status.
-int interrupt_run(const fs::path& cfg, const fs::path& out, int signo) {
+// Starts the tiny run to `out` (with `extra` arguments, up to three), sends `signo` once it has
+// written a checkpoint, and returns the wait status.
+int interrupt_run(const fs::path& cfg, const fs::path& out, int signo,
+                  std::vector<std::string> extra = {}) {
+  extra.resize(3);
   const pid_t pid = fork();
   if (pid == 0) {
-    execl(CRUMPLE_SIM, CRUMPLE_SIM, cfg.c_str(), "-o", out.c_str(), "--threads", "1", "--quiet",
-          static_cast<char*>(nullptr));
+    std::vector<const char*> argv = {CRUMPLE_SIM, cfg.c_str(), "-o", out.c_str(), "--threads", "1",
+                                     "--quiet"};
+    for (const auto& a : extra)
+      if (!a.empty()) argv.push_back(a.c_str());
+    argv.push_back(nullptr);
+    execv(CRUMPLE_SIM, const_cast<char* const*>(argv.data()));
     _exit(127);
   }
   const fs::path tmp = out.string() + ".tmp";
@@ -193,6 +199,65 @@ TEST(Cli, InterruptedRunResumesToTheUninterruptedResult) {
     EXPECT_TRUE(b.resumes[0].changes.empty());
     EXPECT_GT(b.resumes[0].t, 0.0);
   }
+}
+
+// A complete run extended with --extend to more cycles is, step for step, the run that had been
+// given those cycles from the start; its file stays as it was until the longer run completes
+// (here stopped by SIGTERM during the extension and resumed). What is not an extension is
+// refused with the run file untouched.
+TEST(Cli, ExtendedRunIsTheLongerRun) {
+  const fs::path cfg = write("tiny.yaml", kTiny);
+  const fs::path whole = kDir / "whole_for_extend.h5", out = kDir / "extended.h5";
+  const std::string tmp = out.string() + ".tmp";
+  for (const auto& p : {whole, out, fs::path(tmp)}) fs::remove(p);
+  const std::string opts = " --threads 1 --quiet";
+  ASSERT_EQ(sim(cfg.string() + " -o " + whole.string() + opts).code, 0);
+  const RunRecord a = read_run_file(whole.string());
+  ASSERT_EQ(a.cycles.size(), 2u);
+
+  const std::string base = cfg.string() + " -o " + out.string() + opts;
+  const Result absent = sim(base + " --extend");
+  EXPECT_EQ(absent.code, 2);
+  EXPECT_NE(absent.err.find("--extend needs the complete run there"), std::string::npos) << absent.err;
+  ASSERT_EQ(sim(base + " --set protocol.cycles=1").code, 0);
+  const auto stamp = fs::last_write_time(out);
+  struct Refusal {
+    std::string args, expect;
+  };
+  for (const Refusal& r : std::vector<Refusal>{
+           {" --set protocol.cycles=1", "--extend needs more (e.g. --set protocol.cycles=2)"},
+           {" --set protocol.cycles=2 --set mesh.nodes=150", "mesh.nodes: 120 in the run, 150 given"},
+           {" --set protocol.cycles=2 --force", "contradict"}}) {
+    SCOPED_TRACE(r.args);
+    const Result refused = sim(base + " --extend" + r.args);
+    EXPECT_EQ(refused.code, 2);
+    EXPECT_NE(refused.err.find(r.expect), std::string::npos) << refused.err;
+    EXPECT_EQ(fs::last_write_time(out), stamp) << "a refused extension touched the run file";
+    EXPECT_FALSE(fs::exists(tmp));
+  }
+
+  const int status = interrupt_run(cfg, out, SIGTERM, {"--extend", "--set", "protocol.cycles=2"});
+  ASSERT_TRUE(WIFEXITED(status));
+  ASSERT_EQ(WEXITSTATUS(status), 128 + SIGTERM) << "the extension finished before the signal?";
+  ASSERT_TRUE(fs::exists(tmp));
+  EXPECT_EQ(read_run_file(out.string()).cycles.size(), 1u) << "the run file changed before the end";
+  const Result again = sim(base + " --extend --set protocol.cycles=2");
+  EXPECT_EQ(again.code, 2);
+  EXPECT_NE(again.err.find("pass --resume"), std::string::npos) << again.err;
+  const Result resumed = sim(base + " --resume --set protocol.cycles=2");
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  EXPECT_FALSE(fs::exists(tmp));
+  const RunRecord b = read_run_file(out.string());
+  expect_same_run(a, b);
+  EXPECT_EQ(YAML::Load(b.config)["protocol"]["cycles"].as<int>(), 2);
+  ASSERT_EQ(b.resumes.size(), 2u);
+  EXPECT_EQ(b.resumes[0].t, a.cycles[0].t) << "extended from the end of cycle 1";
+  const auto& c = b.resumes[0].changes;
+  EXPECT_NE(std::find(c.begin(), c.end(), "protocol.cycles: 1 -> 2"), c.end())
+      << (c.empty() ? "" : c[0]);
+  EXPECT_EQ(b.resumes[0].program_before, std::string(kVersion) + " (" + kGitRevision + ")");
+  for (std::size_t k = 0; k < a.frames.size(); ++k)
+    ASSERT_EQ(a.frames[k].state.t, b.frames[k].state.t) << "frame " << k;
 }
 
 // A run that failed numerically (exit 3, here: a step limit the first step cannot meet) goes on

@@ -108,6 +108,47 @@ class Expand(unittest.TestCase):
             self.assertEqual(read(run + ".log"),
                              "piece started with --force\npiece started with --resume\n")
 
+    def test_a_finished_run_made_again_is_extended_when_it_can_be(self):
+        # The rule of a finished run whose arguments changed offers it to --extend first (the
+        # stand-in takes it, exit 0, or refuses it as crumple-sim does what is not more cycles,
+        # exit 2, or fails in it numerically, exit 3): extended, the log goes on; refused, the
+        # run is made afresh; failed, it is neither made afresh nor called done.
+        with tempfile.TemporaryDirectory() as tmp:
+            r, _, out = expand(GOOD, tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            run = json.loads(read(os.path.join(out, "points.json")))["points"][0]["run"]
+            fake = os.path.join(tmp, "fake-sim")
+            with open(fake, "w") as f:
+                f.write('#!/bin/sh\nout=""; how=""\n'
+                        'while [ $# -gt 0 ]; do case "$1" in -o) out="$2"; shift;; '
+                        '--resume|--force|--extend) how="$1";; esac; shift; done\n'
+                        'echo "piece started with $how" >&2\n'
+                        'if [ "$how" = --extend ]; then exit "$EXTEND_EXIT"; fi\n'
+                        ': > "$out"; exit 0\n')
+            os.chmod(fake, 0o755)
+
+            def make(extend_exit):
+                os.utime(run + ".args")  # the arguments changed after the run
+                os.utime(run, (1, 1))
+                return subprocess.run(
+                    ["make", "--no-print-directory", "-f", os.path.join(out, "points.mk"),
+                     "SIM=" + fake, "ANALYZE=" + fake, run], cwd=REPO, capture_output=True,
+                    text=True, env=dict(os.environ, EXTEND_EXIT=str(extend_exit)))
+
+            with open(run, "w"), open(run + ".log", "w") as log:
+                log.write("the first run\n")
+            done = make(0)
+            self.assertEqual(done.returncode, 0, done.stdout + done.stderr)
+            self.assertEqual(read(run + ".log"), "the first run\npiece started with --extend\n")
+            done = make(2)
+            self.assertEqual(done.returncode, 0, done.stdout + done.stderr)
+            self.assertEqual(read(run + ".log"), "piece started with --force\n")
+            failed = make(3)
+            self.assertNotEqual(failed.returncode, 0)
+            self.assertIn("run failed", failed.stdout)
+            self.assertEqual(read(run + ".log"), "piece started with --force\n"
+                                                 "piece started with --extend\n")
+
     def test_runs_depend_on_their_resolved_configuration_not_the_protocol_file(self):
         import h5py
         with tempfile.TemporaryDirectory() as tmp:
