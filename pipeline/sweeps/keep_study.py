@@ -6,7 +6,9 @@ make predictions' PREDICTIONS.md and predictions.json; compare_groups.py's COMPA
 .json, and any COMPARISON_WHAT.md and .json beside them), and groups.csv, each group's per-cycle
 ensemble table (mean, s.d. and s.e.m. over seeds of the crease lengths, P, facet counts,
 single-triangle fraction, a_fit, a_univ and the fit above the resolution floor, and the KS
-tests' counts). The run files stay out (they are binary and large); `make sweep SWEEP=NAME` makes them again, and
+tests' counts), and runs.csv, the same statistics run by run and cycle with each cycle's roll
+axis and its smallest angle to the axes rolled before (seed-paired comparisons need the seeds, not
+only their mean; roll_axes.py). The run files stay out (they are binary and large); `make sweep SWEEP=NAME` makes them again, and
 `plot_sweep.py --results docs/studies/NAME --collapse-only` redraws the collapse from the JSON.
 
 usage: keep_study.py --points runs/sweeps/NAME/points.json --results results/NAME --out docs/studies/NAME
@@ -21,6 +23,9 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
 from common import die, load_ensemble, load_json, sweep_groups  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from roll_axes import angle_between  # noqa: E402
+
 QUANTITIES = ("perimeter_P", "crease_length_L0", "new_crease_length_L0", "n_facets",
               "single_triangle_fraction", "a_fit", "dangling_fraction", "plastic_rotation_L0",
               "creased_rotation_share", "creased_hinge_share", "a_univ",
@@ -31,6 +36,56 @@ COUNTS = ("ks_n_tested", "ks_n_rejected", "ks_above_floor_n_tested", "ks_above_f
           "a_fit_above_floor_n")
 # The fits above the floor that stopped on each edge of their search (FitEdge).
 EDGES = ("a_min", "a_max", "theta")
+
+
+# Run by run: the statistics a seed-paired comparison takes.
+RUN_QUANTITIES = ("perimeter_P", "crease_length_L0", "new_crease_length_L0", "n_facets",
+                  "single_triangle_fraction", "a_fit", "dangling_fraction", "creased_hinge_share")
+
+
+def recorded_roll_axes(run):
+    """{cycle: roll axis in degrees} as the run file records it at each roll's end ({} for a
+    file without them)."""
+    import h5py
+    try:
+        with h5py.File(run, "r") as f:
+            ends = [f["stage_ends"][k].attrs for k in sorted(f.get("stage_ends", {}))]
+            return {int(e["cycle"]): float(e["roll_axis_deg"]) for e in ends
+                    if e["stage"] == "roll" and "roll_axis_deg" in e}
+    except OSError:
+        return {}
+
+
+def write_runs_table(pts, path):
+    """runs.csv: one row per run and cycle of the points whose analysis is there; False if none."""
+    rows = []
+    for p in pts["points"]:
+        stats = os.path.join(p["analysis"], "stats.json")
+        if not os.path.isfile(stats):
+            continue
+        axes = recorded_roll_axes(p["run"])
+        earlier = []
+        for c in load_json(stats, "run analysis")["cycles"]:
+            axis = axes.get(c["cycle"])
+            novelty = (min(angle_between(axis, e) for e in earlier)
+                       if axis is not None and earlier else None)
+            if axis is not None:
+                earlier.append(axis)
+            rows.append([p["group"], p["seed"], c["cycle"], c.get("compaction")] +
+                        [c.get(q) for q in RUN_QUANTITIES] +
+                        [None if axis is None else round(axis, 3),
+                         None if novelty is None else round(novelty, 3)])
+    if not rows:
+        return False
+    with open(path, "w", newline="") as f:
+        f.write(f"# sweep {pts['name']} ({pts['file']}): per run and cycle; roll_axis_deg as "
+                "recorded at the roll's end, novelty_deg its smallest angle to the cycle's "
+                "earlier axes\n")
+        w = csv.writer(f)
+        w.writerow(["group", "seed", "cycle", "compaction"] + list(RUN_QUANTITIES) +
+                   ["roll_axis_deg", "novelty_deg"])
+        w.writerows(rows)
+    return True
 
 
 def main():
@@ -84,6 +139,8 @@ def main():
                            [row.get(c) for c in cols[5:len(cols) - len(EDGES)]] +
                            [edges.get(e) for e in EDGES])
     kept.append("groups.csv")
+    if write_runs_table(pts, os.path.join(a.out, "runs.csv")):
+        kept.append("runs.csv")
     print(f"keep_study: {a.out}: {', '.join(kept)}")
 
 

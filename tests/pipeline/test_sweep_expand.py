@@ -7,6 +7,7 @@ every sweep shipped in pipeline/sweeps/ resolves with this build.
 
 usage: test_sweep_expand.py CRUMPLE_SIM   (from the repository root)
 """
+import csv
 import json
 import os
 import subprocess
@@ -315,11 +316,35 @@ class Expand(unittest.TestCase):
                          "COMPARISON_unfold.json", "COMPARISON_notes.txt"):
                 with open(os.path.join(res, name), "w") as f:
                     f.write("x")
+            # Two runs analysed, the first with its roll axes recorded (30, 170, 100 degrees:
+            # 40 and 70 from the axes before), the second from a file that has none.
+            import h5py
+            for k, p in enumerate(doc["points"][:2]):
+                os.makedirs(p["analysis"])
+                with open(os.path.join(p["analysis"], "stats.json"), "w") as f:
+                    json.dump({"cycles": [{"cycle": n, "compaction": 0.5, "perimeter_P": 5.0 * n}
+                                          for n in (1, 2, 3)]}, f)
+                with h5py.File(p["run"], "w") as f:
+                    for n, axis in enumerate((30.0, 170.0, 100.0), start=1):
+                        for j, stage in enumerate(("roll", "compress")):
+                            e = f.create_group(f"stage_ends/{2 * n + j:06d}").attrs
+                            e["cycle"], e["stage"] = n, stage
+                            if k == 0 and stage == "roll":
+                                e["roll_axis_deg"] = axis
             r = subprocess.run(run, capture_output=True, text=True)
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertEqual(sorted(os.listdir(kept)),
                              ["COMPARISON.json", "COMPARISON.md", "COMPARISON_unfold.json",
-                              "COMPARISON_unfold.md", "REPORT.md", "collapse.json", "groups.csv"])
+                              "COMPARISON_unfold.md", "REPORT.md", "collapse.json", "groups.csv",
+                              "runs.csv"])
+            with open(os.path.join(kept, "runs.csv")) as f:
+                runs = list(csv.DictReader(l for l in f if not l.startswith("#")))
+            self.assertEqual(len(runs), 6)  # two runs x three cycles
+            first = [r for r in runs if r["seed"] == str(doc["points"][0]["seed"]) and
+                     r["group"] == doc["points"][0]["group"]]
+            self.assertEqual([r["novelty_deg"] for r in first], ["", "40.0", "70.0"])
+            self.assertEqual([r["perimeter_P"] for r in first], ["5.0", "10.0", "15.0"])
+            self.assertTrue(all(r["roll_axis_deg"] == "" for r in runs if r not in first))
             report = read(os.path.join(kept, "REPORT.md"))
             self.assertTrue(report.startswith("# Sweep `s`\n\n> Kept in the repository"), report)
             # Kept outside docs/studies/NAME: the note gives the script's command, not make keep-study.
