@@ -79,7 +79,9 @@ sweep fail SCHEDULER=slurm SLURM_WAIT=1 > "$T/resubmit.log" 2>&1 || { tail -20 "
 grep -q "runs to do" "$T/resubmit.log"
 todo=$(sed -n 's/.*submit: \([0-9]*\) of 4 runs to do.*/\1/p' "$T/resubmit.log")
 [ "$todo" -ge 1 ] && [ "$todo" -lt 4 ] || { echo "FAIL: resubmitted $todo of 4 runs"; exit 1; }
-grep -q -- "--resume" "$T"/fail/runs/slurm/*.out || { echo "FAIL: the stopped run did not resume"; exit 1; }
+# (The rule's text names --resume whichever way it goes: the run file says whether it resumed.)
+$PY -c 'import h5py, sys; sys.exit(0 if len(h5py.File(sys.argv[1], "r")["resumes"]) else 1)' \
+  "${tmp%.tmp}" || { echo "FAIL: the stopped run did not resume (${tmp%.tmp}: /resumes empty)"; exit 1; }
 compare "$T/local" "$T/fail"
 printf 'tiny sweep wall: local %.1f s, through Slurm %.1f s (one node, %d CPUs)\n' \
   "$(echo "$t1 - $t0" | bc)" "$(echo "$t2 - $t1" | bc)" "$(nproc)"
