@@ -88,8 +88,7 @@ std::vector<std::string> resume_changes(const Params& stored, const Params& give
       refused.push_back(given.where(key) + ": " + old_value + " in the run, " + new_value +
                         " given");
   }
-  if (extending && given.protocol.cycles <= stored.protocol.cycles &&
-      a.at("protocol.cycles") == b.at("protocol.cycles"))
+  if (extending && a.at("protocol.cycles") == b.at("protocol.cycles"))
     refused.push_back(given.where("protocol.cycles") + ": " +
                       std::to_string(given.protocol.cycles) + ", the run's own; --extend needs "
                       "more (e.g. --set protocol.cycles=" +
