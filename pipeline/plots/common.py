@@ -115,6 +115,19 @@ def read_csv(path):
         return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
 
+def write_csv(path, rows, comment=None):
+    """rows (dicts with the same keys) to a CSV file, whole or not at all: written beside it
+    and renamed; `comment` becomes a first line starting with '#'."""
+    tmp = path + ".new"
+    with open(tmp, "w", newline="") as f:
+        if comment:
+            f.write(f"# {comment}\n")
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    os.replace(tmp, path)
+
+
 def law_constants():
     """c1, c2 of the crease-length law (data/crease_length_law_constants.csv)."""
     rows = {r["name"]: float(r["value"]) for r in

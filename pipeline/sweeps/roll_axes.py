@@ -18,7 +18,6 @@ usage: roll_axes.py RUN.h5 [RUN.h5 ...] -o OUT.csv
        (each RUN.h5's analysis is read from RUN.analysis/stats.json, as make sweep writes it)
 """
 import argparse
-import csv
 import json
 import math
 import os
@@ -27,7 +26,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
-from common import die  # noqa: E402
+from common import die, write_csv  # noqa: E402
 
 
 def axis_of(x, ref):
@@ -109,12 +108,7 @@ def main():
                          "angle_to_earlier_axes_deg": novelty, "P": P.get(cycle),
                          "P_increment": inc})
             seen.append(d)
-    tmp = a.output + ".new"
-    with open(tmp, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    os.replace(tmp, a.output)
+    write_csv(a.output, rows)
     later = [r for r in rows if r["angle_to_earlier_axes_deg"] is not None]
     for lo, hi in ((0, 5), (5, 30), (30, 91)):
         sel = [r["P_increment"] for r in later if lo <= r["angle_to_earlier_axes_deg"] < hi]

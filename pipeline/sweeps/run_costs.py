@@ -12,7 +12,6 @@ those of the machine the runs ran on; the counts of searches and steps are exact
 Exit 0 with the CSV written, 2 on bad input (a missing run or tool), naming it.
 """
 import argparse
-import csv
 import json
 import os
 import re
@@ -21,6 +20,9 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
 import crumple  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
+from common import write_csv  # noqa: E402
 
 LOG_KEYS = ["wall_total", "contact_searches", "contact_search_s", "contact_eval_s",
             "steps_implicit", "steps_explicit"]
@@ -88,13 +90,8 @@ def main():
             row[f"{s}_frames"], row[f"{s}_frames_crossing"], row[f"{s}_most_crossings"] = \
                 frames, bad, worst
         rows.append(row)
-    tmp = a.output + ".new"
-    with open(tmp, "w", newline="") as f:
-        f.write(f"# run costs and crossing layers of {a.points} (pipeline/sweeps/run_costs.py)\n")
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    os.replace(tmp, a.output)
+    write_csv(a.output, rows,
+              f"run costs and crossing layers of {a.points} (pipeline/sweeps/run_costs.py)")
     print(f"run_costs: {a.output}: {len(rows)} runs")
 
 

@@ -22,7 +22,6 @@ usage: seed_roll_axes.py --seeds 1 2 3 [--cycles 10] [-o OUT.csv]
        seed_roll_axes.py --seeds 1-100 --cycles 10 -o OUT.csv
 """
 import argparse
-import csv
 import math
 import os
 import sys
@@ -31,7 +30,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from roll_axes import angle_between  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
-from common import die  # noqa: E402
+from common import die, write_csv  # noqa: E402
 
 MASK64 = (1 << 64) - 1
 
@@ -120,12 +119,7 @@ def main():
                          "angle_to_earlier_axes_deg": None if nov is None else round(nov, 3),
                          "uniform_mean_deg": None if c == 1 else round(90.0 / c, 3)})
     if a.output:
-        tmp = a.output + ".new"
-        with open(tmp, "w", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=list(rows[0]))
-            w.writeheader()
-            w.writerows(rows)
-        os.replace(tmp, a.output)
+        write_csv(a.output, rows)
     if len(seeds) <= 12:
         for s in seeds:
             mine = [r for r in rows if r["seed"] == s]

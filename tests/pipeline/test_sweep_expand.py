@@ -50,6 +50,19 @@ def expand(text, tmp, sim=False, extra=()):
     return r, path, out
 
 
+def fake_sim(tmp, body):
+    """A stand-in simulator for the run rules: it notes in its log (stderr) which way it was
+    started (--resume, --force or --extend) as $how, with the run file as $out, then runs `body`."""
+    fake = os.path.join(tmp, "fake-sim")
+    with open(fake, "w") as f:
+        f.write('#!/bin/sh\nout=""; how=""\n'
+                'while [ $# -gt 0 ]; do case "$1" in -o) out="$2"; shift;; '
+                '--resume|--force|--extend) how="$1";; esac; shift; done\n'
+                'echo "piece started with $how" >&2\n' + body)
+    os.chmod(fake, 0o755)
+    return fake
+
+
 class Expand(unittest.TestCase):
     def test_points_args_and_rules(self):
         with tempfile.TemporaryDirectory() as tmp:
@@ -90,15 +103,8 @@ class Expand(unittest.TestCase):
             r, _, out = expand(GOOD, tmp)
             self.assertEqual(r.returncode, 0, r.stderr)
             run = json.loads(read(os.path.join(out, "points.json")))["points"][0]["run"]
-            fake = os.path.join(tmp, "fake-sim")
-            with open(fake, "w") as f:
-                f.write('#!/bin/sh\nout=""; how=""\n'
-                        'while [ $# -gt 0 ]; do case "$1" in -o) out="$2"; shift;; '
-                        '--resume|--force) how="$1";; esac; shift; done\n'
-                        'echo "piece started with $how" >&2\n'
-                        'if [ -e "$out.tmp" ]; then : > "$out"; rm "$out.tmp"; exit 0; fi\n'
-                        ': > "$out.tmp"; exit 143\n')
-            os.chmod(fake, 0o755)
+            fake = fake_sim(tmp, 'if [ -e "$out.tmp" ]; then : > "$out"; rm "$out.tmp"; exit 0; fi\n'
+                                 ': > "$out.tmp"; exit 143\n')
             make = ["make", "--no-print-directory", "-f", os.path.join(out, "points.mk"),
                     "SIM=" + fake, "ANALYZE=" + fake, run]
             first = subprocess.run(make, cwd=REPO, capture_output=True, text=True)
@@ -118,15 +124,8 @@ class Expand(unittest.TestCase):
             r, _, out = expand(GOOD, tmp)
             self.assertEqual(r.returncode, 0, r.stderr)
             run = json.loads(read(os.path.join(out, "points.json")))["points"][0]["run"]
-            fake = os.path.join(tmp, "fake-sim")
-            with open(fake, "w") as f:
-                f.write('#!/bin/sh\nout=""; how=""\n'
-                        'while [ $# -gt 0 ]; do case "$1" in -o) out="$2"; shift;; '
-                        '--resume|--force|--extend) how="$1";; esac; shift; done\n'
-                        'echo "piece started with $how" >&2\n'
-                        'if [ "$how" = --extend ]; then exit "$EXTEND_EXIT"; fi\n'
-                        ': > "$out"; exit 0\n')
-            os.chmod(fake, 0o755)
+            fake = fake_sim(tmp, 'if [ "$how" = --extend ]; then exit "$EXTEND_EXIT"; fi\n'
+                                 ': > "$out"; exit 0\n')
 
             def make(extend_exit):
                 os.utime(run + ".args")  # the arguments changed after the run
