@@ -21,7 +21,7 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
-from common import die, load_ensemble, load_json, sweep_groups  # noqa: E402
+from common import die, load_ensemble, load_json, sweep_groups, write_csv  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from roll_axes import angle_between  # noqa: E402
@@ -71,20 +71,16 @@ def write_runs_table(pts, path):
                        if axis is not None and earlier else None)
             if axis is not None:
                 earlier.append(axis)
-            rows.append([p["group"], p["seed"], c["cycle"], c.get("compaction")] +
-                        [c.get(q) for q in RUN_QUANTITIES] +
-                        [None if axis is None else round(axis, 3),
-                         None if novelty is None else round(novelty, 3)])
+            rows.append({"group": p["group"], "seed": p["seed"], "cycle": c["cycle"],
+                         "compaction": c.get("compaction"),
+                         **{q: c.get(q) for q in RUN_QUANTITIES},
+                         "roll_axis_deg": None if axis is None else round(axis, 3),
+                         "novelty_deg": None if novelty is None else round(novelty, 3)})
     if not rows:
         return False
-    with open(path, "w", newline="") as f:
-        f.write(f"# sweep {pts['name']} ({pts['file']}): per run and cycle; roll_axis_deg as "
-                "recorded at the roll's end, novelty_deg its smallest angle to the cycle's "
-                "earlier axes\n")
-        w = csv.writer(f)
-        w.writerow(["group", "seed", "cycle", "compaction"] + list(RUN_QUANTITIES) +
-                   ["roll_axis_deg", "novelty_deg"])
-        w.writerows(rows)
+    write_csv(path, rows, f"sweep {pts['name']} ({pts['file']}): per run and cycle; roll_axis_deg "
+              "as recorded at the roll's end, novelty_deg its smallest angle to the cycle's "
+              "earlier axes")
     return True
 
 

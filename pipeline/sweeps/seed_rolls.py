@@ -20,13 +20,12 @@ Writes OUT.json and OUT.md. Exit 2 on bad input (no runs.csv, no roll axes in it
 usage: seed_rolls.py --runs docs/studies/NAME/runs.csv [--group GROUP] -o OUT
 """
 import argparse
-import csv
 import json
 import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
-from common import die  # noqa: E402
+from common import die, read_csv  # noqa: E402
 
 
 def angle_to_side(axis):
@@ -44,18 +43,16 @@ def spearman(xs, ys):
     from scipy.stats import spearmanr
     if len(xs) < 3 or len(set(xs)) < 2 or len(set(ys)) < 2:
         return None, None
-    rho = float(spearmanr(xs, ys).statistic)
+    r = spearmanr(xs, ys)
+    rho = float(r.statistic)
     if len(xs) > 7:
-        return rho, float(spearmanr(xs, ys).pvalue)
+        return rho, float(r.pvalue)
     rhos = [float(spearmanr(xs, list(p)).statistic) for p in permutations(ys)]
     return rho, sum(1 for r in rhos if abs(r) >= abs(rho) - 1e-12) / len(rhos)
 
 
 def read_runs(path, group):
-    if not os.path.isfile(path):
-        die(f"{path}: no such file (make keep-study writes runs.csv)")
-    with open(path) as f:
-        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    rows = read_csv(path)
     need = {"group", "seed", "cycle", "perimeter_P", "roll_axis_deg", "novelty_deg"}
     if not rows or not need <= set(rows[0]):
         die(f"{path}: not a runs.csv (columns {sorted(need)} expected)")
