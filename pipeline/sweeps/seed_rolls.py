@@ -125,32 +125,34 @@ def main():
           "side of the sheet (uniform draw: 22.5° on average); for each later cycle the roll's "
           "novelty (its smallest angle to the axes rolled before; the second roll's averages 45° "
           "in a uniform draw) and the increment of P.", "",
-          "| group | seed | first roll to side | P(1) | " +
-          " | ".join(f"cycle {n}: novelty, ΔP" for n in cycles) + " |",
-          "| --- | --- | --- | --- | " + " | ".join("---" for _ in cycles) + " |"]
+          "| " + " | ".join(["group", "seed", "first roll to side", "P(1)"]
+                           + [f"cycle {n}: novelty, ΔP" for n in cycles]) + " |",
+          "|" + " --- |" * (4 + len(cycles))]
     for r in table:
         by = {c["cycle"]: c for c in r["cycles"]}
-        md.append(f"| {r['group']} | {r['seed']} | {r['first_roll_to_side_deg']:.1f}° | "
-                  f"{r['P1']:.1f} | " + " | ".join(
-                      f"{by[n]['novelty_deg']:.1f}°, {by[n]['P_increment']:+.1f}" if n in by else "–"
-                      for n in cycles) + " |")
+        md.append("| " + " | ".join(
+            [r["group"], str(r["seed"]), f"{r['first_roll_to_side_deg']:.1f}°", f"{r['P1']:.1f}"]
+            + [f"{by[n]['novelty_deg']:.1f}°, {by[n]['P_increment']:+.1f}" if n in by else "–"
+               for n in cycles]) + " |")
     s = summary
     md += ["", f"- Spearman ρ of P(1) with the first roll's angle to the side: "
                f"{fmt(s['spearman_P1_vs_first_roll_to_side'])} (p = {fmt(s['p_P1'], 3)}) over "
                f"{s['pairs_P1']} runs "
-               f"(mean angle {fmt(s['mean_first_roll_to_side_deg'], 1)}°)",
-           f"- Spearman ρ of the increment of P with the roll's novelty: "
-           f"{fmt(s['spearman_increment_vs_novelty'])} (p = {fmt(s['p_increment'], 3)}) over "
-           f"{s['pairs_increment']} run-cycles (the cycles of a run are not independent draws "
-           "of the rest of its history, so p is indicative)",
-           f"- mean increment of rolls within 10° of an earlier axis: "
-           f"{fmt(s['mean_increment_novelty_below_10'], 1)} L0 ({s['n_below_10']}); beyond 30°: "
-           f"{fmt(s['mean_increment_novelty_above_30'], 1)} L0 ({s['n_above_30']})",
-           f"- mean novelty of the second roll: {fmt(s['mean_second_roll_novelty_deg'], 1)}°", ""]
+               f"(mean angle {fmt(s['mean_first_roll_to_side_deg'], 1)}°)"]
+    if later:  # a one-cycle study has no later rolls to tell about
+        md += [f"- Spearman ρ of the increment of P with the roll's novelty: "
+               f"{fmt(s['spearman_increment_vs_novelty'])} (p = {fmt(s['p_increment'], 3)}) over "
+               f"{s['pairs_increment']} run-cycles (the cycles of a run are not independent draws "
+               "of the rest of its history, so p is indicative)",
+               f"- mean increment of rolls within 10° of an earlier axis: "
+               f"{fmt(s['mean_increment_novelty_below_10'], 1)} L0 ({s['n_below_10']}); beyond 30°: "
+               f"{fmt(s['mean_increment_novelty_above_30'], 1)} L0 ({s['n_above_30']})",
+               f"- mean novelty of the second roll: {fmt(s['mean_second_roll_novelty_deg'], 1)}°"]
+    md.append("")
     with open(a.output + ".md.new", "w") as f:
         f.write("\n".join(md))
     os.replace(a.output + ".md.new", a.output + ".md")
-    print("\n".join(md[-5:]))
+    print("\n".join(line for line in md if line.startswith("- ")))
 
 
 if __name__ == "__main__":

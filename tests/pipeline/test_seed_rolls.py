@@ -2,7 +2,7 @@
 """pipeline/sweeps/seed_rolls.py on a runs.csv written here: each run's first roll measured from
 the nearer side of the sheet, each later roll's novelty beside its increment of P, the rank
 correlations with an exact p-value for few runs (three runs in perfect order: p = 1/3, not 0),
-the means of repeated and new rolls; a file without roll axes, or not a runs.csv, exits 2.
+the means of repeated and new rolls; a one-cycle study reports its first rolls only; a file without roll axes, or not a runs.csv, exits 2.
 
 usage: test_seed_rolls.py   (from the repository root)
 """
@@ -63,6 +63,23 @@ class SeedRolls(unittest.TestCase):
             self.assertAlmostEqual(s["mean_second_roll_novelty_deg"], (0.5 + 9.6 + 65.3) / 3)
             with open(out + ".md") as f:
                 self.assertIn("| g | 3 | 10.6° | 15.0 | 65.3°, +12.0 | 5.7°, +2.0 |", f.read())
+
+    def test_one_cycle_study(self):
+        """A calibration keeps one cycle: the table has no cycle columns and the report no
+        statements about later rolls (none were rolled)."""
+        one = "".join(line for line in RUNS.splitlines(keepends=True)
+                      if not line.startswith(("g,1,2", "g,1,3", "g,2,2", "g,2,3", "g,3,2", "g,3,3")))
+        with tempfile.TemporaryDirectory() as tmp:
+            r, out = run(tmp, one)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(out + ".md") as f:
+                md = f.read()
+            self.assertIn("| group | seed | first roll to side | P(1) |\n| --- | --- | --- | --- |\n", md)
+            self.assertIn("| g | 3 | 10.6° | 15.0 |\n", md)
+            self.assertNotIn("novelty:", md.split("\n\n")[-1])
+            self.assertNotIn("increment", md.split("| g | 3")[1])
+            with open(out + ".json") as f:
+                self.assertEqual(json.load(f)["summary"]["pairs_increment"], 0)
 
     def test_bad_input(self):
         with tempfile.TemporaryDirectory() as tmp:
