@@ -70,7 +70,11 @@ calibrate-yield:
 # make keep-study SWEEP=compaction_flat_unfold keeps them too. PREDICT_SWEEP and
 # PREDICT_CALIBRATION name another compaction sweep and the calibration of its material: the
 # former unfold is PREDICT_SWEEP=compaction
-# PREDICT_CALIBRATION=docs/studies/yield_radius_calibration/calibration.json.
+# PREDICT_CALIBRATION=docs/studies/yield_radius_calibration/calibration.json. A sweep of one
+# group at 0.27 (not a compaction sweep) names it with PREDICT_GROUP, e.g. the six-seed prediction
+# PREDICT_SWEEP=flat_unfold_six_seeds_calibrated PREDICT_GROUP=yield_radius-3.55e-3
+# PREDICT_CALIBRATION=docs/studies/yield_radius_calibration_six_seeds/calibration.json.
+PREDICT_GROUP ?=
 PREDICT_GROUPS ?=
 PREDICT_SEEDS ?=
 PREDICT_SWEEP ?= compaction_flat_unfold
@@ -80,4 +84,5 @@ predictions:
 	$(MAKE) --no-print-directory sweep SWEEP=$(PREDICT_SWEEP) SWEEP_GROUPS="$(PREDICT_GROUPS)" SWEEP_SEEDS="$(PREDICT_SEEDS)"
 	$(PYTHON) pipeline/calibration/predictions.py --sweep-results $(RESULTS)/$(PREDICT_SWEEP) \
 	  --points runs/sweeps/$(PREDICT_SWEEP)/points.json --calibration $(PREDICT_CALIBRATION) \
+	  $(if $(PREDICT_GROUP),--group $(PREDICT_GROUP)) \
 	  --out $(RESULTS)/$(PREDICT_SWEEP) -o $(RESULTS)/$(PREDICT_SWEEP)/predictions.$(FIG_FORMAT)

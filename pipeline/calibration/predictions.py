@@ -375,6 +375,8 @@ def main():
                     help="only redraw the figure from a kept predictions.json (make study-figures)")
     ap.add_argument("--points", help="runs/sweeps/compaction/points.json (for the resolution)")
     ap.add_argument("--compaction", type=float, default=0.27)
+    ap.add_argument("--group", help="the sweep's group crumpled to --compaction (default "
+                    "compaction-D, a compaction sweep's name; a one-group sweep names its own)")
     ap.add_argument("--out")
     add_figure_args(ap)
     a = ap.parse_args()
@@ -390,12 +392,13 @@ def main():
     points = load_json(a.points, "points file") if a.points else {"points": []}
     if a.points:
         check_material(points, cal, a.points, a.calibration)
-    group = os.path.join(a.sweep_results, "groups", f"compaction-{a.compaction:g}", "ensemble.json")
+    name = a.group or f"compaction-{a.compaction:g}"
+    group = os.path.join(a.sweep_results, "groups", name, "ensemble.json")
     ens = load_ensemble(group)
     if ens.get("compaction") != a.compaction:
         die(f"{group}: crumpled to {ens.get('compaction')}, not {a.compaction}")
     # The group's points (optional): the resolution and the analysis options they ran with.
-    own = [pt for pt in points["points"] if pt["group"] == f"compaction-{a.compaction:g}"]
+    own = [pt for pt in points["points"] if pt["group"] == name]
     analyze = own[0].get("analyze_args", []) if own else []
     nodes = sorted({n for n in (set_value(pt, "mesh.nodes") for pt in own) if n is not None})
     law = experiment(a.compaction, [c["cycle"] for c in ens["cycles"]])

@@ -246,7 +246,7 @@ def law(n):
 class Predictions(unittest.TestCase):
     def run_case(self, factor, c1=50.0, c2=0.12, compactions=(0.63, 0.27, 0.18), sensitivity=None,
                  runs=None, material=("--set", "material.yield_radius=3.58e-3"), protocol=None,
-                 code=0):
+                 code=0, group=None):
         tmp = tempfile.mkdtemp()
         if runs is None:
             # Three seeds each growing as the law, at 0.9, 1 and 1.1 times the mean.
@@ -263,8 +263,9 @@ class Predictions(unittest.TestCase):
                "n_runs": 3, "compaction": D, "seeds": [1, 2, 3], "parameters": {"threshold": 0.318},
                "fits": {"perimeter_P": {"increments": {"C": 38.0, "sigma_C": 3.0, "n0": 2.5,
                                                         "sigma_n0": 0.5}}}}
-        os.makedirs(os.path.join(tmp, "groups", "compaction-0.27"))
-        with open(os.path.join(tmp, "groups", "compaction-0.27", "ensemble.json"), "w") as f:
+        name = group or "compaction-0.27"
+        os.makedirs(os.path.join(tmp, "groups", name))
+        with open(os.path.join(tmp, "groups", name, "ensemble.json"), "w") as f:
             json.dump(ens, f)
         with open(os.path.join(tmp, "collapse.json"), "w") as f:
             json.dump({"compactions": list(compactions), "fits": {"perimeter_P": {"increments": {
@@ -275,7 +276,7 @@ class Predictions(unittest.TestCase):
                                       "sigma": 0.05, "key_value": 3.58e-3, "c0": None}}, f)
         # The sweep's points: the preset's node count, then the sweep's own, which wins.
         with open(os.path.join(tmp, "points.json"), "w") as f:
-            pts = {"points": [{"group": "compaction-0.27", "analyze_args": ["--px-per-edge", "24"],
+            pts = {"points": [{"group": name, "analyze_args": ["--px-per-edge", "24"],
                                "args": ["p.yaml", "--set", "mesh.nodes=1500", "--set",
                                         "mesh.nodes=3000", *material]}]}
             if protocol is not None:
@@ -286,7 +287,8 @@ class Predictions(unittest.TestCase):
         r = subprocess.run([sys.executable, PREDICT, "--sweep-results", tmp, "--calibration",
                             os.path.join(tmp, "cal.json"), "--points", os.path.join(tmp, "points.json"),
                             "--out", os.path.join(tmp, "out"),
-                            "-o", os.path.join(tmp, "out", "p.svg")], capture_output=True, text=True)
+                            "-o", os.path.join(tmp, "out", "p.svg"),
+                            *(["--group", group] if group else [])], capture_output=True, text=True)
         self.assertEqual(r.returncode, code, r.stderr)
         if code:
             return r.stderr
@@ -313,6 +315,14 @@ class Predictions(unittest.TestCase):
         self.assertEqual(goals["global c1 and c2"], "not tested")
         self.assertIsNone(doc["global"])
         self.assertIn("fewer than two compactions", md)
+
+    def test_a_one_group_sweep_names_its_group(self):
+        # A sweep of one group at the calibrated radius (not a compaction sweep): --group names
+        # it, and its points give the resolution as a compaction sweep's do.
+        goals, doc, _ = self.run_case(1.1, compactions=(0.27,), group="yield_radius-3.58e-3")
+        self.assertEqual(goals["P(n)"], "yes")
+        self.assertTrue(doc["source"].endswith(os.path.join("yield_radius-3.58e-3", "ensemble.json")))
+        self.assertEqual(doc["resolution"], "3000 nodes, analysed at --px-per-edge 24")
 
     def test_within_every_goal(self):
         goals, doc, md = self.run_case(1.1)
