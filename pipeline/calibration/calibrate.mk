@@ -40,17 +40,19 @@ $(CAL_OUT)/FOLD_CALIBRATION.md: $(CAL_RUNS) pipeline/calibration/fold_calibratio
 
 # make calibrate-yield: the one fitted material constant, the yield radius (issue 36;
 # docs/SCIENCE.md). Runs the protocol's calibration sweep (pipeline/sweeps/
-# yield_radius_calibration_flat_unfold.yaml: one cycle at Δ̃ = 0.27 with the protocol's unfold
-# for a bracket of material.yield_radius, 3 seeds, 3000 nodes, creases above the protocol's 18.3
-# degrees; resumable) and finds the radius at which P after cycle 1 meets the experiments' law
-# (pipeline/calibration/yield_calibration.py): results/yield_radius_calibration_flat_unfold/
+# yield_radius_calibration_six_seeds.yaml: one cycle at Δ̃ = 0.27 with the protocol's unfold
+# for a bracket of material.yield_radius, seeds 1-6, 3000 nodes, creases above the protocol's
+# 18.3 degrees; resumable) and finds the radius at which P after cycle 1 meets the experiments'
+# law (pipeline/calibration/yield_calibration.py): results/yield_radius_calibration_six_seeds/
 # CALIBRATION.md, calibration.json, .csv and the figure. About 15 minutes on 2 cores.
-# CALIBRATE_SWEEP=yield_radius_calibration_flat_unfold_6000 makes it on 6000 nodes (about 35
+# CALIBRATE_SWEEP=yield_radius_calibration_flat_unfold is the same on seeds 1-3 (3.34 mm, the
+# protocol's radius until 2026-12-07; docs/studies/yield_radius_calibration_flat_unfold/),
+# CALIBRATE_SWEEP=yield_radius_calibration_flat_unfold_6000 on 6000 nodes (seeds 1-3; about 35
 # minutes on 2 cores; docs/studies/yield_radius_calibration_flat_unfold_6000/),
 # CALIBRATE_SWEEP=yield_radius_calibration redoes the calibration at the former unfold
 # (flatten_length 0.05, docs/studies/yield_radius_calibration/), CALIBRATE_SWEEP=yield_calibration
 # the older one of a yield angle at 1500 nodes (docs/studies/yield_calibration/).
-CALIBRATE_SWEEP ?= yield_radius_calibration_flat_unfold
+CALIBRATE_SWEEP ?= yield_radius_calibration_six_seeds
 .PHONY: calibrate-yield
 calibrate-yield:
 	$(MAKE) --no-print-directory sweep SWEEP=$(CALIBRATE_SWEEP)

@@ -56,8 +56,8 @@ def main():
         run = os.path.join(tmp, "run.h5")
         r = subprocess.run([sim, "protocols/axial_crumpling.yaml", "--seed", "3", "--threads", "1",
                             "--set", "mesh.nodes=200", "--set", "protocol.cycles=2",
-                            # A 200-node hinge must fold about 105 degrees to reach the
-                            # protocol's 3.34 mm yield radius; a yield angle creases it in two
+                            # A 200-node hinge must fold about 100 degrees to reach the
+                            # protocol's 3.55 mm yield radius; a yield angle creases it in two
                             # cycles, which is what this test needs to see.
                             "--set", "material.yield_radius=0", "--set", "material.yield_angle=37.1",
                             "-o", run,

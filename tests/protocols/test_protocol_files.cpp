@@ -26,7 +26,7 @@ TEST(ProtocolFiles, EveryFileRunsOnATinySheet) {
     const std::string cmd = std::string(CRUMPLE_SIM) + " " + entry.path().string() + " -o " +
                             out.string() +
                             // 200 nodes: quick, and fine enough for a hinge to bend to the axial
-                            // protocol's 3.34 mm yield radius (refused below about 100 nodes,
+                            // protocol's 3.55 mm yield radius (refused below about 90 nodes,
                             // sim/assemble/sheet_setup.cpp).
                             " --quiet --force --threads 1 --set mesh.nodes=200 --set protocol.t_max=0.08"
                             " --set output.dt=0.02";
