@@ -118,6 +118,9 @@ def main():
 
     def fmt(x, nd=2):
         return "–" if x is None else f"{x:.{nd}f}"
+
+    def pval(p):
+        return "p < 0.001" if p is not None and p < 0.001 else f"p = {fmt(p, 3)}"
     cycles = sorted({c["cycle"] for r in table for c in r["cycles"]})
     md = [f"# Roll axes and crease growth run by run (`{os.path.relpath(a.runs)}`"
           + (f", group {a.group})" if a.group else ")"), "",
@@ -136,12 +139,12 @@ def main():
                for n in cycles]) + " |")
     s = summary
     md += ["", f"- Spearman ρ of P(1) with the first roll's angle to the side: "
-               f"{fmt(s['spearman_P1_vs_first_roll_to_side'])} (p = {fmt(s['p_P1'], 3)}) over "
+               f"{fmt(s['spearman_P1_vs_first_roll_to_side'])} ({pval(s['p_P1'])}) over "
                f"{s['pairs_P1']} runs "
                f"(mean angle {fmt(s['mean_first_roll_to_side_deg'], 1)}°)"]
     if later:  # a one-cycle study has no later rolls to tell about
         md += [f"- Spearman ρ of the increment of P with the roll's novelty: "
-               f"{fmt(s['spearman_increment_vs_novelty'])} (p = {fmt(s['p_increment'], 3)}) over "
+               f"{fmt(s['spearman_increment_vs_novelty'])} ({pval(s['p_increment'])}) over "
                f"{s['pairs_increment']} run-cycles (the cycles of a run are not independent draws "
                "of the rest of its history, so p is indicative)",
                f"- mean increment of rolls within 10° of an earlier axis: "

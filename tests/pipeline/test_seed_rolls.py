@@ -62,7 +62,9 @@ class SeedRolls(unittest.TestCase):
             self.assertAlmostEqual(s["mean_increment_novelty_above_30"], (13 + 12) / 2)
             self.assertAlmostEqual(s["mean_second_roll_novelty_deg"], (0.5 + 9.6 + 65.3) / 3)
             with open(out + ".md") as f:
-                self.assertIn("| g | 3 | 10.6° | 15.0 | 65.3°, +12.0 | 5.7°, +2.0 |", f.read())
+                md = f.read()
+            self.assertIn("| g | 3 | 10.6° | 15.0 | 65.3°, +12.0 | 5.7°, +2.0 |", md)
+            self.assertIn("to the side: -1.00 (p = 0.333) over 3 runs", md)
 
     def test_one_cycle_study(self):
         """A calibration keeps one cycle: the table has no cycle columns and the report no
@@ -80,6 +82,20 @@ class SeedRolls(unittest.TestCase):
             self.assertNotIn("increment", md.split("| g | 3")[1])
             with open(out + ".json") as f:
                 self.assertEqual(json.load(f)["summary"]["pairs_increment"], 0)
+
+    def test_a_vanishing_p_is_written_as_a_bound(self):
+        # Twenty run-cycles whose increment rises with the novelty: scipy's p is far below 1e-3,
+        # which three decimals would print as 0.000.
+        text = "# runs.csv\n" + HEADER + "".join(
+            row(k, 1, 10, 30) + row(k, 2, 10 + 2 * k, 30 + 3 * k, 3 * k)
+            + row(k, 3, 10 + 2 * k + 2 * k + 1, 30 + 3 * k + 3 * k + 1.5, 3 * k + 1.5)
+            for k in range(1, 11))
+        with tempfile.TemporaryDirectory() as tmp:
+            r, out = run(tmp, text)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(out + ".md") as f:
+                md = f.read()
+            self.assertIn("novelty: 1.00 (p < 0.001) over 20 run-cycles", md)
 
     def test_bad_input(self):
         with tempfile.TemporaryDirectory() as tmp:
