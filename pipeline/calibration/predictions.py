@@ -301,7 +301,7 @@ def report(doc, fig_name):
               "ensemble has no per-run threshold-sensitivity table): not tabulated.", ""]
         return "\n".join(L)
     last = max(c["cycle"] for r in rows for c in r["cycles"])
-    L += [f"A crease is a hinge whose permanent fold exceeds a threshold, a convention (the "
+    L += ["A crease is a hinge whose permanent fold exceeds a threshold, a convention (the "
           f"experiments' curvature threshold is not published). The same runs counted at other "
           f"thresholds give other shapes of growth: below, P(n)/P(1) of the simulation (means over "
           f"the seeds) divided by L(n)/L(1) of the law (1 is the law's shape). Only the analysis's "

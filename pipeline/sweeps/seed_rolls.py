@@ -121,6 +121,7 @@ def main():
 
     def pval(p):
         return "p < 0.001" if p is not None and p < 0.001 else f"p = {fmt(p, 3)}"
+
     cycles = sorted({c["cycle"] for r in table for c in r["cycles"]})
     md = [f"# Roll axes and crease growth run by run (`{os.path.relpath(a.runs)}`"
           + (f", group {a.group})" if a.group else ")"), "",
