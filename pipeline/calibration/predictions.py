@@ -302,16 +302,16 @@ def report(doc, fig_name):
         return "\n".join(L)
     last = max(c["cycle"] for r in rows for c in r["cycles"])
     L += ["A crease is a hinge whose permanent fold exceeds a threshold, a convention (the "
-          f"experiments' curvature threshold is not published). The same runs counted at other "
-          f"thresholds give other shapes of growth: below, P(n)/P(1) of the simulation (means over "
-          f"the seeds) divided by L(n)/L(1) of the law (1 is the law's shape). Only the analysis's "
-          f"own threshold is calibrated (P(1) = the law's first cycle); at any other the yield "
-          f"would have to be calibrated again, on other runs, so these rows show how far the "
-          f"convention can move the growth, not predictions. Errors are those of a ratio of means "
-          f"whose numerator and denominator are correlated across the seeds (delta method); with "
-          f"few seeds they are themselves uncertain. The means are over every seed, a seed without "
-          f"creases at cycle 1 included; the last column gives each seed's own ratio (– where "
-          f"its P(1) is 0).", "",
+          "experiments' curvature threshold is not published). The same runs counted at other "
+          "thresholds give other shapes of growth: below, P(n)/P(1) of the simulation (means over "
+          "the seeds) divided by L(n)/L(1) of the law (1 is the law's shape). Only the analysis's "
+          "own threshold is calibrated (P(1) = the law's first cycle); at any other the yield "
+          "would have to be calibrated again, on other runs, so these rows show how far the "
+          "convention can move the growth, not predictions. Errors are those of a ratio of means "
+          "whose numerator and denominator are correlated across the seeds (delta method); with "
+          "few seeds they are themselves uncertain. The means are over every seed, a seed without "
+          "creases at cycle 1 included; the last column gives each seed's own ratio (– where "
+          "its P(1) is 0).", "",
           f"| threshold | fold angle (deg) | P(1) (L0) | shape ratio, cycle 2 | cycle {last} | "
           f"range over cycles 2-{last} | within ±20 % | cycle {last} per seed |",
           "| --- | --- | --- | --- | --- | --- | --- | --- |"]
