@@ -42,6 +42,15 @@ def run(tmp, text, *extra):
     return r, out
 
 
+def report(test, text):
+    """The Markdown and JSON seed_rolls.py writes for a runs.csv that it must accept."""
+    with tempfile.TemporaryDirectory() as tmp:
+        r, out = run(tmp, text)
+        test.assertEqual(r.returncode, 0, r.stderr)
+        with open(out + ".md") as f, open(out + ".json") as g:
+            return f.read(), json.load(g)
+
+
 class SeedRolls(unittest.TestCase):
     def test_table_and_correlations(self):
         with tempfile.TemporaryDirectory() as tmp:
@@ -71,17 +80,12 @@ class SeedRolls(unittest.TestCase):
         statements about later rolls (none were rolled)."""
         one = "".join(line for line in RUNS.splitlines(keepends=True)
                       if not line.startswith(("g,1,2", "g,1,3", "g,2,2", "g,2,3", "g,3,2", "g,3,3")))
-        with tempfile.TemporaryDirectory() as tmp:
-            r, out = run(tmp, one)
-            self.assertEqual(r.returncode, 0, r.stderr)
-            with open(out + ".md") as f:
-                md = f.read()
-            self.assertIn("| group | seed | first roll to side | P(1) |\n| --- | --- | --- | --- |\n", md)
-            self.assertIn("| g | 3 | 10.6° | 15.0 |\n", md)
-            self.assertNotIn("novelty:", md.split("\n\n")[-1])
-            self.assertNotIn("increment", md.split("| g | 3")[1])
-            with open(out + ".json") as f:
-                self.assertEqual(json.load(f)["summary"]["pairs_increment"], 0)
+        md, doc = report(self, one)
+        self.assertIn("| group | seed | first roll to side | P(1) |\n| --- | --- | --- | --- |\n", md)
+        self.assertIn("| g | 3 | 10.6° | 15.0 |\n", md)
+        self.assertNotIn("novelty:", md.split("\n\n")[-1])
+        self.assertNotIn("increment", md.split("| g | 3")[1])
+        self.assertEqual(doc["summary"]["pairs_increment"], 0)
 
     def test_a_vanishing_p_is_written_as_a_bound(self):
         # Twenty run-cycles whose increment rises with the novelty: scipy's p is far below 1e-3,
@@ -90,12 +94,8 @@ class SeedRolls(unittest.TestCase):
             row(k, 1, 10, 30) + row(k, 2, 10 + 2 * k, 30 + 3 * k, 3 * k)
             + row(k, 3, 10 + 2 * k + 2 * k + 1, 30 + 3 * k + 3 * k + 1.5, 3 * k + 1.5)
             for k in range(1, 11))
-        with tempfile.TemporaryDirectory() as tmp:
-            r, out = run(tmp, text)
-            self.assertEqual(r.returncode, 0, r.stderr)
-            with open(out + ".md") as f:
-                md = f.read()
-            self.assertIn("novelty: 1.00 (p < 0.001) over 20 run-cycles", md)
+        md, _ = report(self, text)
+        self.assertIn("novelty: 1.00 (p < 0.001) over 20 run-cycles", md)
 
     def test_bad_input(self):
         with tempfile.TemporaryDirectory() as tmp:
