@@ -288,11 +288,15 @@ def main():
                 f"c1 = {pm(f['c1'], f['sigma_c1'])} against the experiments' {c1_exp:g} "
                 f"({verdict(f['c1'], f['sigma_c1'], c1_exp)}) and c2 = "
                 f"{pm(f['c2'], f['sigma_c2'])} against {c2_exp:g} "
-                f"({verdict(f['c2'], f['sigma_c2'], c2_exp, c2_undetermined(f))}). χ²/dof = "
-                f"{fmt(f['chi2'])}/{f['dof']} says "
-                + ("the law describes all groups within their errors."
-                   if f['dof'] > 0 and f['chi2'] / f['dof'] < 2 else
-                   "the groups do not fall on one curve of this law within their errors.")
+                f"({verdict(f['c2'], f['sigma_c2'], c2_exp, c2_undetermined(f))}). "
+                + (f"With one compaction ratio this is that group's own fit (χ²/dof = "
+                   f"{fmt(f['chi2'])}/{f['dof']}): it tests the growth at that ratio, not a "
+                   "collapse, and c1 and c2 trade against each other within it."
+                   if len(col.get("compactions", [])) < 2 else
+                   f"χ²/dof = {fmt(f['chi2'])}/{f['dof']} says "
+                   + ("the law describes all groups within their errors."
+                      if f['dof'] > 0 and f['chi2'] / f['dof'] < 2 else
+                      "the groups do not fall on one curve of this law within their errors."))
                 + " The experimental constants carry no published uncertainty, and the level "
                 "of c1 depends on the reading of the (1 − D) factor (docs/STATISTICS.md §2.4): "
                 "the shape (c2, the collapse) is the firmer comparison.\n")
