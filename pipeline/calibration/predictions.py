@@ -32,7 +32,7 @@ import sys
 import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
-from common import (add_figure_args, die, experiment, figure_output, load_ensemble,  # noqa: E402
+from common import (add_figure_args, collapses, die, experiment, figure_output, load_ensemble,  # noqa: E402
                     load_json, ratio_of_means, save_figure)
 
 P_BAND = 0.20        # P(n) within ±20 % of the law
@@ -261,8 +261,8 @@ def report(doc, fig_name):
               f"every compaction at once (increments of P): c1 = {g['c1']:.3g} ± {g['sigma_c1']:.2g} "
               f"(experiments 52), c2 = {g['c2']:.3g} ± {g['sigma_c2']:.2g} (experiments 0.1), "
               f"χ²/dof = {g['chi2']:.0f}/{g['dof']}"
-              + (": the groups do not collapse onto one curve of the law within their errors."
-                 if g["dof"] > 0 and g["chi2"] / g["dof"] > 2 else ": the groups collapse onto one curve."), ""]
+              + (": the groups collapse onto one curve." if collapses(g) else
+                 ": the groups do not collapse onto one curve of the law within their errors."), ""]
     else:
         L += ["The compaction sweep's results hold fewer than two compactions: c1 and c2 (a fit over "
               "compactions) are not predicted.", ""]

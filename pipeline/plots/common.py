@@ -135,6 +135,14 @@ def law_constants():
     return rows["c1"], rows["c2"]
 
 
+def collapses(fit):
+    """Whether a fit of the law to several compactions at once (`crumple-analyze collapse`) puts
+    the groups on one curve within their errors: χ²/dof below 2 (loose, since the weights are the
+    s.e.m. of a few seeds). The sweep report and the predictions both judge by this one rule. No
+    degrees of freedom, no collapse."""
+    return fit["dof"] > 0 and fit["chi2"] / fit["dof"] < 2
+
+
 def experiment(D, cycles):
     """The experimental law l/L0 = c1 (1 - D) ln(1 + c2 n/D) (docs/STATISTICS.md §2.1) at
     compaction D: its C = c1 (1 - D), n0 = D/c2 and, for each cycle number n of `cycles`, its

@@ -15,7 +15,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plots"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import die, law_constants, load_ensemble, load_json, sweep_groups  # noqa: E402
+from common import collapses, die, law_constants, load_ensemble, load_json, sweep_groups  # noqa: E402
 from make_report import AGREE_SEM, fmt, pm  # noqa: E402
 
 KEYS = [("perimeter_P", "P (facet perimeters, the experiments' measure)"),
@@ -295,7 +295,7 @@ def main():
                    if len(col.get("compactions", [])) < 2 else
                    f"χ²/dof = {fmt(f['chi2'])}/{f['dof']} says "
                    + ("the law describes all groups within their errors."
-                      if f['dof'] > 0 and f['chi2'] / f['dof'] < 2 else
+                      if collapses(f) else
                       "the groups do not fall on one curve of this law within their errors."))
                 + " The experimental constants carry no published uncertainty, and the level "
                 "of c1 depends on the reading of the (1 − D) factor (docs/STATISTICS.md §2.4): "
