@@ -70,10 +70,13 @@ convergence:
 	$(MAKE) --no-print-directory sweep SWEEP=convergence_flat_unfold
 
 # make keep-study SWEEP=NAME: the sweep's report, figures, fits and per-group tables (no runs)
-# into docs/studies/NAME/, to be committed (pipeline/sweeps/keep_study.py).
+# into docs/studies/NAME/, to be committed (pipeline/sweeps/keep_study.py). KEEP_FIT_AS=TAG keeps
+# only the last fit, one over a subset of the groups, as collapse_TAG.json, predictions_TAG.json
+# and PREDICTIONS_TAG.md beside the study's own (e.g. after make predictions PREDICT_GROUPS=...).
+KEEP_FIT_AS ?=
 keep-study:
 	$(PYTHON) pipeline/sweeps/keep_study.py --points $(SWEEP_DIR)/points.json \
-	  --results $(SWEEP_RESULTS) --out docs/studies/$(SWEEP)
+	  --results $(SWEEP_RESULTS) --out docs/studies/$(SWEEP) $(if $(KEEP_FIT_AS),--fit-as $(KEEP_FIT_AS))
 
 # make study-figures: the collapse, convergence, calibration and prediction figures of every kept
 # study, from its JSON (the per-group figure, crease_length.png, comes with make sweep, which has

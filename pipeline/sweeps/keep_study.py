@@ -11,12 +11,19 @@ axis and its smallest angle to the axes rolled before (seed-paired comparisons n
 only their mean; roll_axes.py). The run files stay out (they are binary and large); `make sweep SWEEP=NAME` makes them again, and
 `plot_sweep.py --results docs/studies/NAME --collapse-only` redraws the collapse from the JSON.
 
+A fit over a subset of the groups (make predictions PREDICT_GROUPS=...) that the docs quote beside
+the study's own is kept with --fit-as TAG: its collapse.json, predictions.json and PREDICTIONS.md
+become collapse_TAG.json, predictions_TAG.json and PREDICTIONS_TAG.md, and nothing else in the kept
+study is touched (so the whole-sweep fit kept before stays).
+
 usage: keep_study.py --points runs/sweeps/NAME/points.json --results results/NAME --out docs/studies/NAME
+       keep_study.py ... --fit-as 0.27-0.63
 """
 import argparse
 import csv
 import glob
 import os
+import re
 import shutil
 import sys
 
@@ -84,13 +91,39 @@ def write_runs_table(pts, path):
     return True
 
 
+# The files a fit writes into the sweep's results (plot_sweep.py's collapse, predictions.py's table).
+FIT_FILES = ("collapse.json", "predictions.json", "PREDICTIONS.md")
+
+
+def keep_fit_as(results, out, tag):
+    """Copies the fit files of results/ to out/ as NAME_TAG.ext; the list of names written."""
+    if not re.fullmatch(r"[A-Za-z0-9][A-Za-z0-9._-]*", tag):
+        die(f"--fit-as {tag!r}: a tag of letters, digits, '.', '_' and '-' (it goes into file names)")
+    found = [f for f in FIT_FILES if os.path.isfile(os.path.join(results, f))]
+    if not found:
+        die(f"{results}: no fit to keep ({', '.join(FIT_FILES)}; run make predictions first)")
+    os.makedirs(out, exist_ok=True)
+    kept = []
+    for f in found:
+        stem, ext = os.path.splitext(f)
+        name = f"{stem}_{tag}{ext}"
+        shutil.copyfile(os.path.join(results, f), os.path.join(out, name))
+        kept.append(name)
+    return kept
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--points", required=True)
     ap.add_argument("--results", required=True)
     ap.add_argument("--out", required=True)
+    ap.add_argument("--fit-as", metavar="TAG",
+                    help="keep only the fit (a subset's), as collapse_TAG.json and so on")
     a = ap.parse_args()
     pts = load_json(a.points, "sweep points file")
+    if a.fit_as is not None:
+        print(f"keep_study: {a.out}: {', '.join(keep_fit_as(a.results, a.out, a.fit_as))}")
+        return
     if not os.path.isfile(os.path.join(a.results, "REPORT.md")):
         die(f"{a.results}/REPORT.md: no report (run make sweep SWEEP={pts.get('name', 'NAME')} first)")
     os.makedirs(a.out, exist_ok=True)

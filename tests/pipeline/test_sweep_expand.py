@@ -354,6 +354,29 @@ class Expand(unittest.TestCase):
                     if not l.startswith("#")]
             self.assertEqual(len(rows), 1 + 4 * 3)  # header, 4 groups x 3 cycles
             self.assertIn(",3,2,4 7,30.0,,1.0,", rows[-1])
+            # A fit over a subset kept beside the study's own: only the fit files, renamed.
+            before = sorted(os.listdir(kept))
+            with open(os.path.join(res, "collapse.json"), "w") as f:
+                f.write('{"subset": true}')
+            with open(os.path.join(res, "PREDICTIONS.md"), "w") as f:
+                f.write("subset table")
+            r = subprocess.run(run + ["--fit-as", "0.27-0.63"], capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(sorted(os.listdir(kept)),
+                             sorted(before + ["PREDICTIONS_0.27-0.63.md", "collapse_0.27-0.63.json"]))
+            self.assertEqual(read(os.path.join(kept, "collapse.json")), "{}")
+            self.assertEqual(read(os.path.join(kept, "collapse_0.27-0.63.json")), '{"subset": true}')
+            for bad in ("../x", "a b", ""):
+                r = subprocess.run(run + ["--fit-as", bad], capture_output=True, text=True)
+                self.assertEqual(r.returncode, 2, bad)
+                self.assertIn("--fit-as", r.stderr)
+            for f in ("collapse.json", "PREDICTIONS.md"):
+                os.remove(os.path.join(res, f))
+            r = subprocess.run(run + ["--fit-as", "none"], capture_output=True, text=True)
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("no fit to keep", r.stderr)
+            self.assertEqual(sorted(os.listdir(kept)),
+                             sorted(before + ["PREDICTIONS_0.27-0.63.md", "collapse_0.27-0.63.json"]))
 
     def test_a_ladder_in_node_count_gets_the_convergence_table(self):
         ladder = GOOD.replace("  protocol.stages.compress.compaction: [0.5, 0.27]\n", "")
