@@ -8,7 +8,8 @@ ensemble table (mean, s.d. and s.e.m. over seeds of the crease lengths, P, facet
 single-triangle fraction, a_fit, a_univ and the fit above the resolution floor, and the KS
 tests' counts), and runs.csv, the same statistics run by run and cycle with each cycle's roll
 axis and its smallest angle to the axes rolled before (seed-paired comparisons need the seeds, not
-only their mean; roll_axes.py). The run files stay out (they are binary and large); `make sweep SWEEP=NAME` makes them again, and
+only their mean; roll_axes.py) and the run's integration wall (so that the costs the docs quote
+are in a kept file). The run files stay out (they are binary and large); `make sweep SWEEP=NAME` makes them again, and
 `plot_sweep.py --results docs/studies/NAME --collapse-only` redraws the collapse from the JSON.
 
 A fit over a subset of the groups (make predictions PREDICT_GROUPS=...) that the docs quote beside
@@ -50,17 +51,19 @@ RUN_QUANTITIES = ("perimeter_P", "crease_length_L0", "new_crease_length_L0", "n_
                   "single_triangle_fraction", "a_fit", "dangling_fraction", "creased_hinge_share")
 
 
-def recorded_roll_axes(run):
-    """{cycle: roll axis in degrees} as the run file records it at each roll's end ({} for a
-    file without them)."""
+def recorded_roll_axes_and_wall(run):
+    """({cycle: roll axis in degrees} as the run file records it at each roll's end, the run's
+    integration wall in s from its /log counters); ({}, None) for what a file lacks."""
     import h5py
     try:
         with h5py.File(run, "r") as f:
             ends = [f["stage_ends"][k].attrs for k in sorted(f.get("stage_ends", {}))]
-            return {int(e["cycle"]): float(e["roll_axis_deg"]) for e in ends
+            axes = {int(e["cycle"]): float(e["roll_axis_deg"]) for e in ends
                     if e["stage"] == "roll" and "roll_axis_deg" in e}
+            wall = f["log"].attrs.get("wall_total") if "log" in f else None
+            return axes, None if wall is None else float(wall)
     except OSError:
-        return {}
+        return {}, None
 
 
 def write_runs_table(pts, path):
@@ -70,7 +73,7 @@ def write_runs_table(pts, path):
         stats = os.path.join(p["analysis"], "stats.json")
         if not os.path.isfile(stats):
             continue
-        axes = recorded_roll_axes(p["run"])
+        axes, wall = recorded_roll_axes_and_wall(p["run"])
         earlier = []
         for c in load_json(stats, "run analysis")["cycles"]:
             axis = axes.get(c["cycle"])
@@ -82,12 +85,14 @@ def write_runs_table(pts, path):
                          "compaction": c.get("compaction"),
                          **{q: c.get(q) for q in RUN_QUANTITIES},
                          "roll_axis_deg": None if axis is None else round(axis, 3),
-                         "novelty_deg": None if novelty is None else round(novelty, 3)})
+                         "novelty_deg": None if novelty is None else round(novelty, 3),
+                         "run_wall_s": None if wall is None else round(wall, 1)})
     if not rows:
         return False
     write_csv(path, rows, f"sweep {pts['name']} ({pts['file']}): per run and cycle; roll_axis_deg "
               "as recorded at the roll's end, novelty_deg its smallest angle to the cycle's "
-              "earlier axes")
+              "earlier axes; run_wall_s the whole run's integration wall (its /log wall_total, "
+              "the same on each of its rows) on the machine and load it ran with")
     return True
 
 

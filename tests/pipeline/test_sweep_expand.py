@@ -330,6 +330,8 @@ class Expand(unittest.TestCase):
                             e["cycle"], e["stage"] = n, stage
                             if k == 0 and stage == "roll":
                                 e["roll_axis_deg"] = axis
+                    if k == 0:
+                        f.create_group("log").attrs["wall_total"] = 1234.56
             r = subprocess.run(run, capture_output=True, text=True)
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertEqual(sorted(os.listdir(kept)),
@@ -344,6 +346,8 @@ class Expand(unittest.TestCase):
             self.assertEqual([r["novelty_deg"] for r in first], ["", "40.0", "70.0"])
             self.assertEqual([r["perimeter_P"] for r in first], ["5.0", "10.0", "15.0"])
             self.assertTrue(all(r["roll_axis_deg"] == "" for r in runs if r not in first))
+            self.assertEqual([r["run_wall_s"] for r in first], ["1234.6"] * 3)
+            self.assertTrue(all(r["run_wall_s"] == "" for r in runs if r not in first))
             report = read(os.path.join(kept, "REPORT.md"))
             self.assertTrue(report.startswith("# Sweep `s`\n\n> Kept in the repository"), report)
             # Kept outside docs/studies/NAME: the note gives the script's command, not make keep-study.
