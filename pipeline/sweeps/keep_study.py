@@ -114,6 +114,11 @@ def keep_fit_as(results, out, tag):
         name = f"{stem}_{tag}{ext}"
         shutil.copyfile(os.path.join(results, f), os.path.join(out, name))
         kept.append(name)
+    # Say which groups the fit is of, so that a tag naming other ones is seen at once.
+    if "collapse.json" in found:
+        fitted = load_json(os.path.join(results, "collapse.json"), "collapse fit").get("compactions")
+        if fitted:
+            kept[0] += f" (compactions {' '.join(str(c) for c in fitted)})"
     return kept
 
 

@@ -361,7 +361,7 @@ class Expand(unittest.TestCase):
             # A fit over a subset kept beside the study's own: only the fit files, renamed.
             before = sorted(os.listdir(kept))
             with open(os.path.join(res, "collapse.json"), "w") as f:
-                f.write('{"subset": true}')
+                f.write('{"subset": true, "compactions": [0.27, 0.63]}')
             with open(os.path.join(res, "PREDICTIONS.md"), "w") as f:
                 f.write("subset table")
             r = subprocess.run(run + ["--fit-as", "0.27-0.63"], capture_output=True, text=True)
@@ -369,7 +369,9 @@ class Expand(unittest.TestCase):
             self.assertEqual(sorted(os.listdir(kept)),
                              sorted(before + ["PREDICTIONS_0.27-0.63.md", "collapse_0.27-0.63.json"]))
             self.assertEqual(read(os.path.join(kept, "collapse.json")), "{}")
-            self.assertEqual(read(os.path.join(kept, "collapse_0.27-0.63.json")), '{"subset": true}')
+            self.assertEqual(read(os.path.join(kept, "collapse_0.27-0.63.json")),
+                             '{"subset": true, "compactions": [0.27, 0.63]}')
+            self.assertIn("compactions 0.27 0.63", r.stdout)
             for bad in ("../x", "a b", ""):
                 r = subprocess.run(run + ["--fit-as", bad], capture_output=True, text=True)
                 self.assertEqual(r.returncode, 2, bad)
