@@ -96,7 +96,8 @@ def write_runs_table(pts, path):
     return True
 
 
-# The files a fit writes into the sweep's results (plot_sweep.py's collapse, predictions.py's table).
+# The files a fit writes into the sweep's results (plot_sweep.py's collapse, predictions.py's
+# table): kept as they are by a whole keep, renamed by --fit-as.
 FIT_FILES = ("collapse.json", "predictions.json", "PREDICTIONS.md")
 
 
@@ -138,8 +139,8 @@ def main():
         die(f"{a.results}/REPORT.md: no report (run make sweep SWEEP={pts.get('name', 'NAME')} first)")
     os.makedirs(a.out, exist_ok=True)
     kept = []
-    for f in ("collapse.json", "history.json", "convergence.json", "convergence.csv",
-              "convergence_paired.csv", "calibration.json", "calibration.csv", "CALIBRATION.md", "predictions.json", "PREDICTIONS.md",
+    for f in (*FIT_FILES, "history.json", "convergence.json", "convergence.csv",
+              "convergence_paired.csv", "calibration.json", "calibration.csv", "CALIBRATION.md",
               *sorted(os.path.basename(c) for c in glob.glob(os.path.join(a.results, "COMPARISON*"))
                       if c.endswith((".md", ".json"))),
               "crease_length.png", "collapse.png", "convergence.png", "calibration.png", "predictions.png"):
