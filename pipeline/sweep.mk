@@ -18,11 +18,15 @@ SWEEP_SEEDS  ?=
 # SWEEP_GROUPS="compaction-0.63 compaction-0.27": only these grid points (named as their run
 # folders), likewise.
 SWEEP_GROUPS ?=
+# Runs kept as summaries by make keep-runs (a sweep made in parts on machines that do not share
+# runs/): a point with no run here whose run is kept there is analysed from it, not run.
+# SWEEP_KEPT= runs every point here.
+SWEEP_KEPT   ?= docs/studies/$(SWEEP)/runs
 # What the second make (or a Slurm job) is given; SWEEP_DIR and SWEEP_RESULTS may be overridden
 # on the command line to keep a sweep elsewhere (the Slurm test does).
 SWEEP_VARS    = SWEEP=$(SWEEP) BUILD=$(BUILD) SWEEP_DIR=$(SWEEP_DIR) SWEEP_RESULTS=$(SWEEP_RESULTS)
 
-.PHONY: sweep sweep-runs sweep-report keep-study study-figures convergence
+.PHONY: sweep sweep-runs sweep-report keep-study keep-runs study-figures convergence
 
 ifneq ($(SWEEP),)
 -include $(SWEEP_DIR)/points.mk
@@ -33,7 +37,8 @@ sweep: build
 	  echo "make sweep: give SWEEP=NAME, one of: $(SWEEP_NAMES)"; exit 2; }
 	$(PYTHON) pipeline/sweeps/expand_sweep.py $(SWEEP_FILE) --out-dir $(SWEEP_DIR) \
 	  --results $(SWEEP_RESULTS) --sim $(SIM) $(if $(strip $(SWEEP_SEEDS)),--seeds $(SWEEP_SEEDS)) \
-	  $(if $(strip $(SWEEP_GROUPS)),--groups $(SWEEP_GROUPS))
+	  $(if $(strip $(SWEEP_GROUPS)),--groups $(SWEEP_GROUPS)) \
+	  $(if $(strip $(SWEEP_KEPT)),--kept $(SWEEP_KEPT))
 ifeq ($(SCHEDULER),slurm)
 	$(SLURM_SUBMIT) --name sweep-$(SWEEP) --points $(SWEEP_DIR)/points.json --final sweep-report \
 	  --make-vars '$(SWEEP_VARS)' --log-dir $(SWEEP_DIR)/slurm \
@@ -77,6 +82,13 @@ KEEP_FIT_AS ?=
 keep-study:
 	$(PYTHON) pipeline/sweeps/keep_study.py --points $(SWEEP_DIR)/points.json \
 	  --results $(SWEEP_RESULTS) --out docs/studies/$(SWEEP) $(if $(KEEP_FIT_AS),--fit-as $(KEEP_FIT_AS))
+
+# make keep-runs SWEEP=NAME: each finished run of the sweep as a small summary (its analysis, roll
+# axes, wall and what it was made from) in docs/studies/NAME/runs/GROUP/seedS.json, to be
+# committed, so that make sweep on another machine, or after runs/ is gone, takes it in place of
+# the run and runs only the rest (pipeline/sweeps/kept_runs.py).
+keep-runs:
+	$(PYTHON) pipeline/sweeps/kept_runs.py --points $(SWEEP_DIR)/points.json --out $(SWEEP_KEPT)
 
 # make study-figures: the collapse, convergence, calibration and prediction figures of every kept
 # study, from its JSON (the per-group figure, crease_length.png, comes with make sweep, which has

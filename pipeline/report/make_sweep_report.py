@@ -366,6 +366,15 @@ def main():
     analyses_dir = os.path.dirname(pts["points"][0]["analysis"]).rsplit("/", 1)[0]
     add(f"- the runs and their analyses: `{runs_dir}/GROUP/seedS.h5` and "
         + ("`.analysis/`" if runs_dir == analyses_dir else f"`{analyses_dir}/GROUP/seedS.analysis/`"))
+    kept = [p for p in pts["points"] if p.get("kept")]
+    if kept:
+        metas = [load_json(p["kept"], "kept run summary")["stats"].get("input", {}).get("meta", {})
+                 for p in kept]
+        versions = sorted({f"{m.get('program_version', '?')} ({str(m.get('git_revision', '?'))[:12]})"
+                           for m in metas})
+        add(f"- {len(kept)} of the {len(pts['points'])} runs were not made here but analysed from "
+            f"the summaries they were kept as (`make keep-runs`; crumple-sim "
+            f"{', '.join(versions)}): " + ", ".join(p["name"] for p in kept))
     os.makedirs(os.path.dirname(a.output) or ".", exist_ok=True)
     tmp = a.output + ".new"
     with open(tmp, "w") as f:

@@ -19,6 +19,12 @@ Writes into OUT_DIR (runs/sweeps/NAME):
 With --sim, each point's configuration is first resolved with `crumple-sim --print-config`, so
 a mistyped key fails here, naming the sweep file's line, rather than in every run.
 
+With --kept DIR (make sweep passes docs/studies/NAME/runs), a point that has neither a run file
+nor a checkpoint in the run folder and whose run is kept in DIR as a summary (kept_runs.py: a sweep
+made in parts on machines that do not share a run folder) is analysed from that summary instead of
+being run, when the summary was made with the point's own arguments, resolved configuration and
+analysis options; otherwise it is run, and the reason is printed.
+
 A sweep with `runs_of: OTHER` makes no runs of its own: its points are the runs of the sweep
 OTHER.yaml beside it (in OTHER's run folder, made by the same rules), analysed again with its own
 `analyze` options into its own folder, so an analysis choice is studied on runs already made.
@@ -38,6 +44,7 @@ import yaml
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from run_config import update as update_run_config, write_if_changed  # noqa: E402
+import kept_runs  # noqa: E402
 
 KEYS = {"description", "preset", "protocol", "set", "grid", "seeds", "threads", "collapse",
         "convergence", "history", "analyze", "runs_of"}
@@ -295,6 +302,26 @@ def resolve_with_sim(sweep, pts, sim):
     return resolved
 
 
+def take_kept_runs(pts, kept_dir, resolved):
+    """Marks each point that has no run or checkpoint here and whose run is kept in kept_dir, made
+    as the point says (kept_runs.py), with p["kept"] = its summary; says which and why not."""
+    taken = []
+    for p in pts:
+        if os.path.exists(p["run"]) or os.path.exists(p["run"] + ".tmp"):
+            continue
+        path, why = kept_runs.find(kept_dir, p, resolved.get(p["run"]))
+        if path is None:
+            continue
+        if why:
+            print(f"expand_sweep: {path}: not taken for {p['name']}, which runs: {why}")
+        else:
+            p["kept"] = path
+            taken.append(p["name"])
+    if taken:
+        print(f"expand_sweep: {len(taken)} runs analysed from their summaries in {kept_dir} "
+              f"(not run here): {', '.join(taken)}")
+
+
 def members_file(ensemble):
     """The file beside a group's ENSEMBLE.json that lists the analyses it is made of."""
     return ensemble[: -len(".json")] + ".members"
@@ -308,7 +335,8 @@ def make_rules(sweep, pts, out_dir, results, resolved):
              f"SWEEP_COLLAPSE := {'yes' if sweep['collapse'] else ''}",
              f"SWEEP_HISTORY := {sweep['history'] if sweep['history'] is not None else ''}",
              f"SWEEP_CONVERGENCE := {'yes' if sweep['convergence'] else ''}",
-             f"SWEEP_RUNS := {' '.join(p['run'] for p in pts)}",
+             "PYTHON ?= /usr/bin/python3",
+             f"SWEEP_RUNS := {' '.join(p['run'] for p in pts if not p.get('kept'))}",
              f"SWEEP_STATS := {' '.join(p['analysis'] + '/stats.json' for p in pts)}"]
     groups = []
     for p in pts:
@@ -318,6 +346,11 @@ def make_rules(sweep, pts, out_dir, results, resolved):
     lines.append(f"SWEEP_ENSEMBLES := {' '.join(ens)}")
     lines.append("")
     for p in pts:
+        if p.get("kept"):
+            # No run here: the analysis is the kept summary's (kept_runs.py).
+            lines += [f"{p['analysis']}/stats.json: {p['kept']}",
+                      f"\t$(PYTHON) pipeline/sweeps/kept_runs.py --unpack $< -o $@", ""]
+            continue
         args = " ".join(q(a) for a in p["args"])
         # A run depends on what it resolves to (RUN.h5.config), not on the protocol file's date:
         # an edit of the protocol that a sweep's settings override leaves its runs standing.
@@ -365,6 +398,9 @@ def main():
     ap.add_argument("--groups", nargs="+", metavar="GROUP",
                     help="only these of the sweep's groups (grid points, named as in its run "
                          "folders, e.g. compaction-0.27); the report names the groups left out")
+    ap.add_argument("--kept", metavar="DIR",
+                    help="kept run summaries (docs/studies/NAME/runs): a point with no run here "
+                         "whose run is kept there, made as the point says, is analysed from it")
     a = ap.parse_args()
     try:
         sweep = load(a.sweep)
@@ -384,6 +420,8 @@ def main():
                                  f"sweep's groups ({', '.join(sweep['sweep_groups'])})")
             pts = [p for p in pts if p["group"] in a.groups]
         resolved = resolve_with_sim(sweep, pts, a.sim) if a.sim else {}
+        if a.kept and not sweep["runs_of"]:
+            take_kept_runs(pts, a.kept, resolved)
     except SweepError as e:
         print(f"expand_sweep: {e}", file=sys.stderr)
         return 2

@@ -32,6 +32,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from common import die, load_ensemble, load_json, sweep_groups, write_csv  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from kept_runs import rolls_and_wall  # noqa: E402
 from roll_axes import angle_between  # noqa: E402
 
 QUANTITIES = ("perimeter_P", "crease_length_L0", "new_crease_length_L0", "n_facets",
@@ -51,21 +52,6 @@ RUN_QUANTITIES = ("perimeter_P", "crease_length_L0", "new_crease_length_L0", "n_
                   "single_triangle_fraction", "a_fit", "dangling_fraction", "creased_hinge_share")
 
 
-def recorded_roll_axes_and_wall(run):
-    """({cycle: roll axis in degrees} as the run file records it at each roll's end, the run's
-    integration wall in s from its /log counters); ({}, None) for what a file lacks."""
-    import h5py
-    try:
-        with h5py.File(run, "r") as f:
-            ends = [f["stage_ends"][k].attrs for k in sorted(f.get("stage_ends", {}))]
-            axes = {int(e["cycle"]): float(e["roll_axis_deg"]) for e in ends
-                    if e["stage"] == "roll" and "roll_axis_deg" in e}
-            wall = f["log"].attrs.get("wall_total") if "log" in f else None
-            return axes, None if wall is None else float(wall)
-    except OSError:
-        return {}, None
-
-
 def write_runs_table(pts, path):
     """runs.csv: one row per run and cycle of the points whose analysis is there; False if none."""
     rows = []
@@ -73,7 +59,7 @@ def write_runs_table(pts, path):
         stats = os.path.join(p["analysis"], "stats.json")
         if not os.path.isfile(stats):
             continue
-        axes, wall = recorded_roll_axes_and_wall(p["run"])
+        axes, wall = rolls_and_wall(p)  # from the run file, or the summary it was kept as
         earlier = []
         for c in load_json(stats, "run analysis")["cycles"]:
             axis = axes.get(c["cycle"])

@@ -384,6 +384,87 @@ class Expand(unittest.TestCase):
             self.assertEqual(sorted(os.listdir(kept)),
                              sorted(before + ["PREDICTIONS_0.27-0.63.md", "collapse_0.27-0.63.json"]))
 
+    def test_a_sweep_made_in_parts_takes_kept_runs_in_place_of_runs(self):
+        # Machine A runs one point and keeps it (make keep-runs); machine B, with no runs/ of its
+        # own, analyses that point from its summary and runs only the rest.
+        keep = os.path.join(REPO, "pipeline", "sweeps", "kept_runs.py")
+        sys.path.insert(0, os.path.join(REPO, "pipeline", "sweeps"))
+        import h5py
+        import kept_runs
+        with tempfile.TemporaryDirectory() as tmp:
+            a, b, kdir = (os.path.join(tmp, d) for d in ("a", "b", "kept"))
+            os.makedirs(a)
+            os.makedirs(b)
+            r, _, out = expand(GOOD, a, extra=["--kept", kdir])
+            self.assertEqual(r.returncode, 0, r.stderr)
+            points = os.path.join(out, "points.json")
+            r = subprocess.run([sys.executable, keep, "--points", points, "--out", kdir],
+                               capture_output=True, text=True)
+            self.assertEqual(r.returncode, 2)  # nothing run yet: nothing kept
+            self.assertIn("no finished, analysed run to keep", r.stderr)
+            p0 = json.loads(read(points))["points"][0]
+            stats = {"input": {"meta": {"program_version": "9.9.9", "git_revision": "abc"}},
+                     "cycles": [{"cycle": n, "perimeter_P": 4.0 * n} for n in (1, 2, 3)]}
+            os.makedirs(p0["analysis"])
+            with open(os.path.join(p0["analysis"], "stats.json"), "w") as f:
+                json.dump(stats, f)
+            with h5py.File(p0["run"], "w") as f:
+                for n, axis in enumerate((30.0, 170.0, 100.0), start=1):
+                    e = f.create_group(f"stage_ends/{n:06d}").attrs
+                    e["cycle"], e["stage"], e["roll_axis_deg"] = n, "roll", axis
+                f.create_group("log").attrs["wall_total"] = 99.5
+            r = subprocess.run([sys.executable, keep, "--points", points, "--out", kdir],
+                               capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("1 runs kept", r.stdout)
+            self.assertIn("not yet run or analysed", r.stdout)
+            summary = os.path.join(kdir, p0["group"], f"seed{p0['seed']}.json")
+            s = json.loads(read(summary))
+            self.assertEqual((s["args"], s["stats"], s["run_wall_s"]), (p0["args"], stats, 99.5))
+            self.assertEqual(s["roll_axis_deg"], {"1": 30.0, "2": 170.0, "3": 100.0})
+            # Machine B: the kept point is analysed from its summary and has no run rule.
+            r, _, out_b = expand(GOOD, b, extra=["--kept", kdir])
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("1 runs analysed from their summaries", r.stdout)
+            pts_b = json.loads(read(os.path.join(out_b, "points.json")))["points"]
+            q0 = pts_b[0]
+            self.assertEqual(q0["kept"], summary)
+            self.assertFalse(any(q.get("kept") for q in pts_b[1:]))
+            rules = read(os.path.join(out_b, "points.mk"))
+            self.assertNotIn(f"{q0['run']}:", rules)
+            self.assertNotIn(q0["run"], rules.split("SWEEP_RUNS := ")[1].split("\n")[0])
+            self.assertIn(pts_b[1]["run"] + ":", rules)
+            target = os.path.join(q0["analysis"], "stats.json")
+            r = subprocess.run(["make", "--no-print-directory", "-f", os.path.join(out_b, "points.mk"),
+                                "PYTHON=" + sys.executable, "SIM=/bin/false", "ANALYZE=/bin/false",
+                                target], cwd=REPO, capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+            self.assertEqual(json.loads(read(target)), stats)
+            # keep_study.py's runs.csv reads the rolls and wall from the summary.
+            self.assertEqual(kept_runs.rolls_and_wall(q0), ({1: 30.0, 2: 170.0, 3: 100.0}, 99.5))
+            # Keeping B's runs leaves the summary it took as it was.
+            os.utime(summary, (5, 5))
+            self.assertEqual(kept_runs.summary(q0), None)
+            # A changed sweep or analysis option, or a run file here, and the point runs.
+            for k, (sweep, why) in enumerate((
+                    (GOOD.replace("cycles: 3", "cycles: 4"), "made with other crumple-sim arguments"),
+                    (GOOD + "analyze: --px-per-edge 12\n", "analysed with other crumple-analyze options"))):
+                c = os.path.join(tmp, f"c{k}")
+                os.makedirs(c)
+                r, _, out_c = expand(sweep, c, extra=["--kept", kdir])
+                self.assertEqual(r.returncode, 0, r.stderr)
+                self.assertIn(f"not taken for {p0['name']}, which runs: {why}", r.stdout)
+                self.assertFalse(any(q.get("kept") for q in
+                                     json.loads(read(os.path.join(out_c, "points.json")))["points"]))
+            with open(q0["run"], "w"):
+                pass
+            r, _, out_b = expand(GOOD, b, extra=["--kept", kdir])
+            self.assertFalse(json.loads(read(os.path.join(out_b, "points.json")))["points"][0].get("kept"))
+            # A configuration that resolves otherwise does not stand either.
+            s["config"] = "mesh: {nodes: 200}\n"
+            self.assertIsNone(kept_runs.mismatch(s, p0, "mesh: {nodes: 200}\n"))
+            self.assertIn("resolves otherwise", kept_runs.mismatch(s, p0, "mesh: {nodes: 300}\n"))
+
     def test_a_ladder_in_node_count_gets_the_convergence_table(self):
         ladder = GOOD.replace("  protocol.stages.compress.compaction: [0.5, 0.27]\n", "")
         with tempfile.TemporaryDirectory() as tmp:
