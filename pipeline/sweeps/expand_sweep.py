@@ -304,22 +304,32 @@ def resolve_with_sim(sweep, pts, sim):
 
 def take_kept_runs(pts, kept_dir, resolved):
     """Marks each point that has no run or checkpoint here and whose run is kept in kept_dir, made
-    as the point says (kept_runs.py), with p["kept"] = its summary; says which and why not."""
-    taken = []
+    as the point says (kept_runs.py), with p["kept"] = its summary; says which and why not.
+    Returns {stats.json path: its text} for the analyses to write once the whole sweep is read
+    (so that a bad summary further on leaves nothing written)."""
+    taken, analyses = [], {}
     for p in pts:
         if os.path.exists(p["run"]) or os.path.exists(p["run"] + ".tmp"):
             continue
-        path, why = kept_runs.find(kept_dir, p, resolved.get(p["run"]))
-        if path is None:
+        try:
+            kept, why = kept_runs.find(kept_dir, p, resolved.get(p["run"]))
+        except kept_runs.SummaryError as e:
+            raise SweepError(str(e))
+        if kept is None:
             continue
+        path = kept_runs.summary_path(kept_dir, p)
         if why:
             print(f"expand_sweep: {path}: not taken for {p['name']}, which runs: {why}")
-        else:
-            p["kept"] = path
-            taken.append(p["name"])
+            continue
+        p["kept"] = path
+        taken.append(p["name"])
+        # Written at expansion, over whatever an earlier analysis left here (which make would
+        # take as newer than the summary); the make rule only restores it.
+        analyses[os.path.join(p["analysis"], "stats.json")] = kept_runs.stats_text(kept)
     if taken:
         print(f"expand_sweep: {len(taken)} runs analysed from their summaries in {kept_dir} "
               f"(not run here): {', '.join(taken)}")
+    return analyses
 
 
 def members_file(ensemble):
@@ -420,8 +430,13 @@ def main():
                                  f"sweep's groups ({', '.join(sweep['sweep_groups'])})")
             pts = [p for p in pts if p["group"] in a.groups]
         resolved = resolve_with_sim(sweep, pts, a.sim) if a.sim else {}
-        if a.kept and not sweep["runs_of"]:
-            take_kept_runs(pts, a.kept, resolved)
+        kept_analyses = {}
+        if a.kept and os.path.isdir(a.kept):
+            if sweep["runs_of"]:
+                print(f"expand_sweep: {a.kept}: not used by a sweep of {sweep['runs_of']}'s runs, "
+                      "which analyses the run files again")
+            else:
+                kept_analyses = take_kept_runs(pts, a.kept, resolved)
     except SweepError as e:
         print(f"expand_sweep: {e}", file=sys.stderr)
         return 2
@@ -436,6 +451,9 @@ def main():
         # A changed analysis argument redoes the analysis, not the run.
         write_if_changed(p["analysis"] + ".args",
                          " ".join(shlex.quote(x) for x in p["analyze_args"]) + "\n")
+    for path, text in kept_analyses.items():
+        if kept_runs.read_text(path) != text:
+            kept_runs.write_atomic(path, text)
     doc = {k: sweep[k] for k in ("name", "file", "description", "preset", "protocol", "seeds",
                                  "sweep_seeds", "sweep_groups", "threads", "collapse", "convergence",
                                  "history", "analyze", "runs_of")}

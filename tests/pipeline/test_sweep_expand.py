@@ -395,46 +395,74 @@ class Expand(unittest.TestCase):
             a, b, kdir = (os.path.join(tmp, d) for d in ("a", "b", "kept"))
             os.makedirs(a)
             os.makedirs(b)
-            r, _, out = expand(GOOD, a, extra=["--kept", kdir])
+            r, _, out = expand(GOOD, a, sim=True, extra=["--kept", kdir])
             self.assertEqual(r.returncode, 0, r.stderr)
             points = os.path.join(out, "points.json")
-            r = subprocess.run([sys.executable, keep, "--points", points, "--out", kdir],
-                               capture_output=True, text=True)
+            keep_runs = [sys.executable, keep, "--points", points, "--out", kdir]
+            r = subprocess.run(keep_runs, capture_output=True, text=True)
             self.assertEqual(r.returncode, 2)  # nothing run yet: nothing kept
             self.assertIn("no finished, analysed run to keep", r.stderr)
             p0 = json.loads(read(points))["points"][0]
-            stats = {"input": {"meta": {"program_version": "9.9.9", "git_revision": "abc"}},
+            stats = {"input": {"meta": {"program_version": "9.9.9", "git_revision": "abc",
+                                        "seed": p0["seed"], "status": "complete"}},
                      "cycles": [{"cycle": n, "perimeter_P": 4.0 * n} for n in (1, 2, 3)]}
-            os.makedirs(p0["analysis"])
-            with open(os.path.join(p0["analysis"], "stats.json"), "w") as f:
-                json.dump(stats, f)
             with h5py.File(p0["run"], "w") as f:
+                f["config"] = read(p0["run"] + ".config")
                 for n, axis in enumerate((30.0, 170.0, 100.0), start=1):
                     e = f.create_group(f"stage_ends/{n:06d}").attrs
                     e["cycle"], e["stage"], e["roll_axis_deg"] = n, "roll", axis
                 f.create_group("log").attrs["wall_total"] = 99.5
-            r = subprocess.run([sys.executable, keep, "--points", points, "--out", kdir],
-                               capture_output=True, text=True)
+            os.makedirs(p0["analysis"])
+            summary = os.path.join(kdir, p0["group"], f"seed{p0['seed']}.json")
+
+            def analysed(when):
+                with open(os.path.join(p0["analysis"], "stats.json"), "w") as f:
+                    json.dump(stats, f)
+                os.utime(os.path.join(p0["analysis"], "stats.json"), (when, when))
+            # Not kept while it is not a finished, current run and analysis.
+            run_time = os.stat(p0["run"]).st_mtime
+            for stale, why in ((lambda: analysed(run_time - 10), "analysis is older than the run"),
+                               (lambda: open(p0["run"] + ".tmp", "w").close(), "a checkpoint"),
+                               (lambda: os.utime(p0["run"] + ".args", (run_time + 5, run_time + 5)),
+                                "arguments or configuration changed after it ran")):
+                analysed(run_time + 10)
+                stale()
+                r = subprocess.run(keep_runs, capture_output=True, text=True)
+                self.assertEqual(r.returncode, 2, why)
+                self.assertIn(why, r.stdout)
+                self.assertFalse(os.path.exists(summary))
+                if os.path.exists(p0["run"] + ".tmp"):
+                    os.remove(p0["run"] + ".tmp")
+                os.utime(p0["run"] + ".args", (run_time - 5, run_time - 5))
+            analysed(run_time + 10)
+            r = subprocess.run(keep_runs, capture_output=True, text=True)
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertIn("1 runs kept", r.stdout)
-            self.assertIn("not yet run or analysed", r.stdout)
-            summary = os.path.join(kdir, p0["group"], f"seed{p0['seed']}.json")
+            self.assertIn("not kept, not run or not analysed yet: ", r.stdout)
             s = json.loads(read(summary))
             self.assertEqual((s["args"], s["stats"], s["run_wall_s"]), (p0["args"], stats, 99.5))
+            self.assertEqual(s["config"], read(p0["run"] + ".config"))
             self.assertEqual(s["roll_axis_deg"], {"1": 30.0, "2": 170.0, "3": 100.0})
-            # Machine B: the kept point is analysed from its summary and has no run rule.
-            r, _, out_b = expand(GOOD, b, extra=["--kept", kdir])
+            # Machine B, where an analysis from before was left: the kept point is analysed from
+            # its summary (the configuration resolved again and compared) and has no run rule.
+            target = os.path.join(b, "runs", p0["group"], f"seed{p0['seed']}.analysis", "stats.json")
+            os.makedirs(os.path.dirname(target))
+            with open(target, "w") as f:
+                f.write('{"cycles": []}\n')
+            r, _, out_b = expand(GOOD, b, sim=True, extra=["--kept", kdir])
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertIn("1 runs analysed from their summaries", r.stdout)
             pts_b = json.loads(read(os.path.join(out_b, "points.json")))["points"]
             q0 = pts_b[0]
+            self.assertEqual(q0["analysis"] + "/stats.json", target)
             self.assertEqual(q0["kept"], summary)
             self.assertFalse(any(q.get("kept") for q in pts_b[1:]))
+            self.assertEqual(json.loads(read(target)), stats)
             rules = read(os.path.join(out_b, "points.mk"))
             self.assertNotIn(f"{q0['run']}:", rules)
             self.assertNotIn(q0["run"], rules.split("SWEEP_RUNS := ")[1].split("\n")[0])
             self.assertIn(pts_b[1]["run"] + ":", rules)
-            target = os.path.join(q0["analysis"], "stats.json")
+            os.remove(target)  # the make rule restores it
             r = subprocess.run(["make", "--no-print-directory", "-f", os.path.join(out_b, "points.mk"),
                                 "PYTHON=" + sys.executable, "SIM=/bin/false", "ANALYZE=/bin/false",
                                 target], cwd=REPO, capture_output=True, text=True)
@@ -444,7 +472,11 @@ class Expand(unittest.TestCase):
             self.assertEqual(kept_runs.rolls_and_wall(q0), ({1: 30.0, 2: 170.0, 3: 100.0}, 99.5))
             # Keeping B's runs leaves the summary it took as it was.
             os.utime(summary, (5, 5))
-            self.assertEqual(kept_runs.summary(q0), None)
+            r = subprocess.run([sys.executable, keep, "--points", os.path.join(out_b, "points.json"),
+                                "--out", kdir], capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("1 runs were taken from their summaries", r.stdout)
+            self.assertEqual(os.stat(summary).st_mtime, 5)
             # A changed sweep or analysis option, or a run file here, and the point runs.
             for k, (sweep, why) in enumerate((
                     (GOOD.replace("cycles: 3", "cycles: 4"), "made with other crumple-sim arguments"),
@@ -459,11 +491,22 @@ class Expand(unittest.TestCase):
             with open(q0["run"], "w"):
                 pass
             r, _, out_b = expand(GOOD, b, extra=["--kept", kdir])
+            self.assertEqual(r.returncode, 0, r.stderr)
             self.assertFalse(json.loads(read(os.path.join(out_b, "points.json")))["points"][0].get("kept"))
             # A configuration that resolves otherwise does not stand either.
-            s["config"] = "mesh: {nodes: 200}\n"
-            self.assertIsNone(kept_runs.mismatch(s, p0, "mesh: {nodes: 200}\n"))
-            self.assertIn("resolves otherwise", kept_runs.mismatch(s, p0, "mesh: {nodes: 300}\n"))
+            self.assertIsNone(kept_runs.mismatch(s, p0, s["config"]))
+            self.assertIn("resolves otherwise",
+                          kept_runs.mismatch(s, p0, s["config"].replace("200", "250")))
+            # A summary that is not one stops the sweep, naming the file and key, nothing written.
+            s.pop("config")
+            with open(summary, "w") as f:
+                json.dump(s, f)
+            fresh = os.path.join(tmp, "d")
+            os.makedirs(fresh)
+            r, _, out_d = expand(GOOD, fresh, extra=["--kept", kdir])
+            self.assertEqual(r.returncode, 2)
+            self.assertIn(f"{summary}: config: missing", r.stderr)
+            self.assertFalse(os.path.exists(out_d))
 
     def test_a_ladder_in_node_count_gets_the_convergence_table(self):
         ladder = GOOD.replace("  protocol.stages.compress.compaction: [0.5, 0.27]\n", "")
