@@ -67,12 +67,14 @@ $(SWEEP_RESULTS)/REPORT.md: $(SWEEP_ENSEMBLES) $(SWEEP_DIR)/points.json $(ANALYZ
 	$(PYTHON) pipeline/report/make_sweep_report.py --points $(SWEEP_DIR)/points.json \
 	  --results $(SWEEP_RESULTS) -o $@
 
-# make convergence: the protocol's resolution ladder of issue 36
-# (pipeline/sweeps/convergence_flat_unfold.yaml), 3000 to 24000 nodes; SWEEP_GROUPS="nodes-3000
-# nodes-6000" runs the rungs a small machine affords first, and the report says which are left.
-# The ladder at the former unfold is SWEEP=convergence (make sweep).
+# make convergence: the protocol's resolution ladder of issue 36 at the yield radius calibrated
+# on six seeds (pipeline/sweeps/convergence_six_seeds.yaml), 3000 to 24000 nodes; the rungs kept
+# as run summaries (docs/studies/convergence_six_seeds/runs/) are analysed from them, the rest
+# run; SWEEP_GROUPS="nodes-3000 nodes-6000 nodes-12000" runs the rungs a small machine affords
+# first, and the report says which are left. The same ladder at the three-seed radius is
+# SWEEP=convergence_flat_unfold, at the former unfold SWEEP=convergence (make sweep).
 convergence:
-	$(MAKE) --no-print-directory sweep SWEEP=convergence_flat_unfold
+	$(MAKE) --no-print-directory sweep SWEEP=convergence_six_seeds
 
 # make keep-study SWEEP=NAME: the sweep's report, figures, fits and per-group tables (no runs)
 # into docs/studies/NAME/, to be committed (pipeline/sweeps/keep_study.py). KEEP_FIT_AS=TAG keeps

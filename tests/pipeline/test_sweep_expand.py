@@ -639,7 +639,9 @@ class Expand(unittest.TestCase):
                 with self.subTest(sweep=name):
                     r = subprocess.run([sys.executable, EXPAND, os.path.join(folder, name + ".yaml"),
                                         "--out-dir", os.path.join(tmp, name),
-                                        "--results", os.path.join(tmp, "res", name), "--sim", SIM],
+                                        "--results", os.path.join(tmp, "res", name), "--sim", SIM,
+                                        # its kept run summaries, if any, must be readable ones
+                                        "--kept", os.path.join(REPO, "docs", "studies", name, "runs")],
                                        cwd=REPO, capture_output=True, text=True)
                     self.assertEqual(r.returncode, 0, r.stderr)
                     points = json.loads(read(os.path.join(tmp, name, "points.json")))
