@@ -75,7 +75,10 @@ def rolls_and_wall(point):
     """A point's roll axes and wall: from its kept summary when the sweep took it from one, else
     from its run file."""
     if point.get("kept"):
-        s = read_summary(point["kept"])
+        try:
+            s = read_summary(point["kept"])
+        except SummaryError as e:
+            die(str(e))
         return {int(k): v for k, v in s.get("roll_axis_deg", {}).items()}, s.get("run_wall_s")
     return recorded_roll_axes_and_wall(point["run"])
 
