@@ -452,8 +452,7 @@ def main():
         write_if_changed(p["analysis"] + ".args",
                          " ".join(shlex.quote(x) for x in p["analyze_args"]) + "\n")
     for path, text in kept_analyses.items():
-        if kept_runs.read_text(path) != text:
-            kept_runs.write_atomic(path, text)
+        kept_runs.write_out(path, text)
     doc = {k: sweep[k] for k in ("name", "file", "description", "preset", "protocol", "seeds",
                                  "sweep_seeds", "sweep_groups", "threads", "collapse", "convergence",
                                  "history", "analyze", "runs_of")}

@@ -38,7 +38,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from common import die, load_json  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_config import stored_config_is  # noqa: E402
+from run_config import stored_config_is, write_if_changed  # noqa: E402
 
 FORMAT = "crumple kept run summary 1"
 
@@ -167,13 +167,10 @@ def find(kept_dir, point, config):
     return kept, mismatch(kept, point, config)
 
 
-def write_atomic(path, text):
-    """Writes the whole file or, on failure, leaves what was there."""
+def write_out(path, text):
+    """write_if_changed (whole or not at all), into a folder made if need be."""
     os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
-    tmp = path + ".tmp"
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, path)
+    write_if_changed(path, text)
 
 
 def keep(points_file, out):
@@ -195,9 +192,7 @@ def keep(points_file, out):
             left.setdefault(why, []).append(p["name"])
             continue
         path = summary_path(out, p)
-        text = json.dumps(summary(p), indent=1) + "\n"
-        if read_text(path) != text:
-            write_atomic(path, text)
+        write_out(path, json.dumps(summary(p), indent=1) + "\n")
         kept.append(p["name"])
     if kept:
         print(f"kept_runs: {out}: {len(kept)} runs kept ({', '.join(kept)})")
@@ -221,8 +216,7 @@ def unpack(path, out):
         kept = read_summary(path)
     except SummaryError as e:
         die(str(e))
-    if read_text(out) != stats_text(kept):
-        write_atomic(out, stats_text(kept))
+    write_out(out, stats_text(kept))
 
 
 def main():
